@@ -1,0 +1,47 @@
+#pragma once
+// Where shader text comes from. Paths are relative to the repository root
+// ("passes/blur/blur.comp.glsl"). Development builds read the source tree first, so an edited
+// file is picked up by hot reload; installed or bundled binaries fall back to the copies
+// embedded at build time (scripts/cmake/embed_shaders.cmake). PENUMBRA_SHADER_DIR overrides the
+// source tree root.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "util/error.h"
+
+namespace penumbra::gl {
+
+struct EmbeddedShaderFile {
+  const char* path;
+  const char* text;
+};
+const std::vector<EmbeddedShaderFile>& embedded_shader_files();
+
+class ShaderFileSystem {
+ public:
+  // Roots searched in order on disk; the embedded table comes after them.
+  ShaderFileSystem();
+  explicit ShaderFileSystem(std::vector<std::filesystem::path> roots, bool use_embedded = true);
+
+  // Tree-wide default: PENUMBRA_SHADER_DIR, then the source tree this binary was built from.
+  static const ShaderFileSystem& default_instance();
+
+  bool exists(const std::string& path) const;
+  // The file's text, or an error naming the path and where it was looked for.
+  Result<std::string> read(const std::string& path) const;
+  // Modification time on disk (hot reload); nullopt for embedded-only files.
+  std::optional<std::filesystem::file_time_type> modified(const std::string& path) const;
+  // Directories searched for an #include that is not found next to the including file.
+  const std::vector<std::string>& include_dirs() const { return include_dirs_; }
+  void add_include_dir(std::string dir) { include_dirs_.push_back(std::move(dir)); }
+
+ private:
+  std::optional<std::filesystem::path> disk_path(const std::string& path) const;
+  std::vector<std::filesystem::path> roots_;
+  std::vector<std::string> include_dirs_ = {"engine/gl/shaders", "passes/common"};
+  bool use_embedded_ = true;
+};
+
+}  // namespace penumbra::gl
