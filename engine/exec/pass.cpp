@@ -1,0 +1,107 @@
+#include "exec/pass.h"
+
+#include <stdexcept>
+
+#include "exec/shader_cache.h"
+
+namespace penumbra::exec {
+
+const graph::PlannedBinding* PassContext::find(std::string_view slot) const {
+  for (const graph::PlannedBinding& b : pass_.bindings)
+    if (b.slot == slot) return &b;
+  return nullptr;
+}
+
+bool PassContext::bound(std::string_view slot) const { return find(slot) != nullptr; }
+
+gl::Texture& PassContext::texture(std::string_view slot) const {
+  const graph::PlannedBinding* b = find(slot);
+  gl::Texture* t = b && b->physical >= 0 ? textures_(b->physical) : nullptr;
+  if (!t)
+    throw std::logic_error("pass '" + pass_.name + "': slot '" + std::string(slot) +
+                           "' has no texture bound");
+  return *t;
+}
+
+gl::Buffer& PassContext::buffer(std::string_view slot) const {
+  const graph::PlannedBinding* b = find(slot);
+  gl::Buffer* buf = b && b->physical >= 0 ? buffers_(b->physical) : nullptr;
+  if (!buf)
+    throw std::logic_error("pass '" + pass_.name + "': slot '" + std::string(slot) +
+                           "' has no buffer bound");
+  return *buf;
+}
+
+const graph::ParamValue& PassContext::value(std::string_view name) const {
+  for (const graph::PlannedParam& p : pass_.params) {
+    if (p.name != name) continue;
+    if (!p.reference.empty())
+      if (const graph::ParamValue* live = params_.get(p.reference)) return *live;
+    return p.value;
+  }
+  throw std::logic_error("pass '" + pass_.name + "' has no parameter '" + std::string(name) + "'");
+}
+
+bool PassContext::boolean(std::string_view name) const {
+  const auto& v = value(name);
+  if (const bool* b = std::get_if<bool>(&v)) return *b;
+  if (const int* i = std::get_if<int>(&v)) return *i != 0;
+  return false;
+}
+
+int PassContext::integer(std::string_view name) const {
+  const auto& v = value(name);
+  if (const int* i = std::get_if<int>(&v)) return *i;
+  if (const double* d = std::get_if<double>(&v)) return static_cast<int>(*d);
+  if (const bool* b = std::get_if<bool>(&v)) return *b ? 1 : 0;
+  return 0;
+}
+
+float PassContext::real(std::string_view name) const {
+  const auto& v = value(name);
+  if (const double* d = std::get_if<double>(&v)) return static_cast<float>(*d);
+  if (const int* i = std::get_if<int>(&v)) return static_cast<float>(*i);
+  return 0.0f;
+}
+
+std::string PassContext::enumeration(std::string_view name) const {
+  const auto& v = value(name);
+  if (const std::string* s = std::get_if<std::string>(&v)) return *s;
+  return {};
+}
+
+gl::ShaderProgram& PassContext::program(const gl::ShaderSources& sources) { return shaders_.get(sources); }
+
+void PassContext::bind_sampled(const gl::ShaderProgram& p, const char* uniform, std::string_view slot,
+                               GLuint sampler) {
+  GLuint unit = next_unit_++;
+  glBindTextureUnit(unit, texture(slot).id());
+  glBindSampler(unit, sampler);
+  p.program().set(uniform, static_cast<int>(unit));
+}
+
+void PassContext::bind_image(GLuint unit, std::string_view slot, GLenum access, int level) const {
+  const gl::Texture& t = texture(slot);
+  glBindImageTexture(unit, t.id(), level, GL_FALSE, 0, access, t.info().internal_format);
+}
+
+void PassContext::dispatch_over(const gl::ShaderProgram& p, int width, int height) const {
+  glm::ivec3 local = p.program().local_size();
+  GLuint gx = static_cast<GLuint>((width + local.x - 1) / std::max(local.x, 1));
+  GLuint gy = static_cast<GLuint>((height + local.y - 1) / std::max(local.y, 1));
+  glUseProgram(p.id());
+  glDispatchCompute(gx, gy, 1);
+}
+
+void PassLibrary::add(PassType type) {
+  declarations_.add(type.decl);
+  std::string name = type.decl.name;
+  types_[name] = std::move(type);
+}
+
+const PassType* PassLibrary::find(std::string_view name) const {
+  auto it = types_.find(name);
+  return it == types_.end() ? nullptr : &it->second;
+}
+
+}  // namespace penumbra::exec

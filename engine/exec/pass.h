@@ -1,0 +1,110 @@
+#pragma once
+// The contract between the render graph and a pass's GL code.
+//
+// A pass type is a GL-free declaration (graph::PassTypeDecl: slots, parameters) plus a factory
+// of PassImpl objects. The executor creates one PassImpl per planned pass when a plan is set,
+// so an implementation may keep GL objects (framebuffers, VAOs) across frames, and calls
+// execute() every frame with a PassContext that resolves slot names to textures and parameter
+// names to their current values.
+//
+//   class InvertPass final : public exec::PassImpl {
+//     Status execute(exec::PassContext& ctx) override {
+//       gl::ShaderProgram& p = ctx.program({.compute = "passes/invert/invert.comp.glsl"});
+//       if (!p.valid()) return p.last_error().value();
+//       ctx.bind_sampled(p, "src", "input");           // texture unit + uniform
+//       ctx.bind_image(0, "output", GL_WRITE_ONLY);     // image unit 0
+//       p.program().set("strength", ctx.real("strength"));
+//       ctx.dispatch_over(p, ctx.texture("output").width(), ctx.texture("output").height());
+//       return {};
+//     }
+//   };
+//   library.add({.decl = {...}, .create = [] { return std::make_unique<InvertPass>(); }});
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "exec/frame_inputs.h"
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "gl/texture.h"
+#include "graph/parameters.h"
+#include "graph/pass_types.h"
+#include "graph/plan.h"
+
+namespace penumbra::exec {
+
+class ShaderCache;
+
+class PassContext {
+ public:
+  PassContext(const graph::PlannedPass& pass, const graph::ParameterSet& params, const FrameInputs& frame,
+              ShaderCache& shaders, std::function<gl::Texture*(int)> textures,
+              std::function<gl::Buffer*(int)> buffers)
+      : pass_(pass), params_(params), frame_(frame), shaders_(shaders),
+        textures_(std::move(textures)), buffers_(std::move(buffers)) {}
+
+  const graph::PlannedPass& pass() const { return pass_; }
+  const FrameInputs& frame() const { return frame_; }
+
+  bool bound(std::string_view slot) const;
+  // The texture bound to `slot`; throws std::logic_error naming pass and slot when unbound
+  // (a declaration bug, caught by the executor and reported as an Error).
+  gl::Texture& texture(std::string_view slot) const;
+  gl::Buffer& buffer(std::string_view slot) const;
+
+  // Current parameter values: "$name" bindings read the live technique parameters, so a
+  // non-structural change takes effect next frame without recompiling.
+  bool boolean(std::string_view name) const;
+  int integer(std::string_view name) const;
+  float real(std::string_view name) const;
+  std::string enumeration(std::string_view name) const;
+
+  // Programs are cached by sources+defines and hot-reloaded by the ShaderCache.
+  gl::ShaderProgram& program(const gl::ShaderSources& sources);
+
+  // Binding helpers (texture units are allocated per call sequence within one pass).
+  void bind_sampled(const gl::ShaderProgram& p, const char* uniform, std::string_view slot,
+                    GLuint sampler = 0);
+  void bind_image(GLuint unit, std::string_view slot, GLenum access, int level = 0) const;
+  // One thread per texel of `target`, rounded up to the program's local size.
+  void dispatch_over(const gl::ShaderProgram& p, int width, int height) const;
+
+ private:
+  const graph::PlannedBinding* find(std::string_view slot) const;
+  const graph::ParamValue& value(std::string_view name) const;
+
+  const graph::PlannedPass& pass_;
+  const graph::ParameterSet& params_;
+  const FrameInputs& frame_;
+  ShaderCache& shaders_;
+  std::function<gl::Texture*(int)> textures_;
+  std::function<gl::Buffer*(int)> buffers_;
+  GLuint next_unit_ = 0;
+};
+
+class PassImpl {
+ public:
+  virtual ~PassImpl() = default;
+  virtual Status execute(PassContext& ctx) = 0;
+};
+
+struct PassType {
+  graph::PassTypeDecl decl;
+  std::function<std::unique_ptr<PassImpl>()> create;
+};
+
+// Every pass type the executor can run; its declarations form the compiler's registry.
+class PassLibrary {
+ public:
+  void add(PassType type);
+  const PassType* find(std::string_view name) const;
+  const graph::PassTypeRegistry& declarations() const { return declarations_; }
+
+ private:
+  std::map<std::string, PassType, std::less<>> types_;
+  graph::PassTypeRegistry declarations_;
+};
+
+}  // namespace penumbra::exec

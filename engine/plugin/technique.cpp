@@ -1,0 +1,87 @@
+#include "plugin/technique.h"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "gl/shader_files.h"
+#include "graph/graph_json.h"
+
+namespace penumbra::plugin {
+
+void TechniqueRegistry::add(Technique technique) {
+  for (Technique& t : techniques_)
+    if (t.name == technique.name) {
+      t = std::move(technique);
+      return;
+    }
+  techniques_.push_back(std::move(technique));
+}
+
+const Technique* TechniqueRegistry::find(const std::string& name) const {
+  for (const Technique& t : techniques_)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+std::vector<std::string> TechniqueRegistry::names() const {
+  std::vector<std::string> out;
+  for (const Technique& t : techniques_) out.push_back(t.name);
+  return out;
+}
+
+void TechniqueRegistry::register_passes(exec::PassLibrary& library) const {
+  for (const Technique& t : techniques_)
+    if (t.register_passes) t.register_passes(library);
+}
+
+Result<graph::GraphDesc> load_technique_graph(const Technique& technique) {
+  auto text = gl::ShaderFileSystem::default_instance().read(technique.graph_file);
+  if (!text) return text.error();
+  auto graph = graph::parse_graph_json(*text, technique.graph_file);
+  if (!graph) {
+    Error e = graph.errors().front();
+    std::string all;
+    for (const auto& err : graph.errors()) all += err.to_string() + "\n";
+    e.details = all;
+    e.kind = ErrorKind::internal;  // a built-in graph that does not parse is our bug
+    return e;
+  }
+  return std::move(*graph);
+}
+
+Result<int> load_plugin_directory(const std::string& dir, TechniqueRegistry& registry) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    Error e = make_error("plugin directory does not exist");
+    e.file = dir;
+    return e;
+  }
+  std::vector<fs::path> libs;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.path().extension() == ".so") libs.push_back(entry.path());
+  std::sort(libs.begin(), libs.end());
+  int loaded = 0;
+  for (const fs::path& p : libs) {
+    void* handle = dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      Error e = make_error(std::string("cannot load plugin: ") + dlerror());
+      e.file = p.string();
+      return e;
+    }
+    using RegisterFn = void (*)(TechniqueRegistry&);
+    auto fn = reinterpret_cast<RegisterFn>(dlsym(handle, "penumbra_register_plugin"));
+    if (!fn) {
+      Error e = make_error("plugin has no extern \"C\" penumbra_register_plugin(TechniqueRegistry&)");
+      e.file = p.string();
+      return e;
+    }
+    fn(registry);  // the library stays loaded: its pass code is used until exit
+    ++loaded;
+  }
+  return loaded;
+}
+
+}  // namespace penumbra::plugin

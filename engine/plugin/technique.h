@@ -1,0 +1,53 @@
+#pragma once
+// A shadow technique is a plugin: a name, a graph description (JSON, with its parameters
+// described once inside it) and the pass types of its own. Every technique writes the same
+// contract, a screen-size `shadow_mask` (1 = lit, 0 = umbra), which the frame's shared
+// lighting pass consumes (frame_graph.h).
+//
+//   registry.add({.name = "pcss",
+//                 .description = "Percentage-closer soft shadows (Fernando 2005)",
+//                 .graph_file = "techniques/baseline/pcss.json",
+//                 .register_passes = register_pcss_passes});
+//
+// graph_file is repository-relative and read through the shader file system, so it comes from
+// the source tree in development and from the embedded copy in a bundled binary.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "exec/pass.h"
+#include "graph/graph_desc.h"
+#include "util/error.h"
+
+namespace penumbra::plugin {
+
+struct Technique {
+  std::string name;
+  std::string description;
+  std::string graph_file;
+  std::function<void(exec::PassLibrary&)> register_passes;  // may be empty
+};
+
+class TechniqueRegistry {
+ public:
+  // A second technique of the same name replaces the first (a plugin may override a built-in).
+  void add(Technique technique);
+  const Technique* find(const std::string& name) const;
+  std::vector<std::string> names() const;  // registration order
+  const std::vector<Technique>& all() const { return techniques_; }
+  // Registers every technique's own pass types into `library`.
+  void register_passes(exec::PassLibrary& library) const;
+
+ private:
+  std::vector<Technique> techniques_;
+};
+
+// The technique's graph as declared in its JSON file.
+Result<graph::GraphDesc> load_technique_graph(const Technique& technique);
+
+// Loads every shared library in `dir` (*.so) and calls its
+//   extern "C" void penumbra_register_plugin(penumbra::plugin::TechniqueRegistry&);
+// which adds techniques (their register_passes add pass types). Returns how many loaded.
+Result<int> load_plugin_directory(const std::string& dir, TechniqueRegistry& registry);
+
+}  // namespace penumbra::plugin
