@@ -1,11 +1,13 @@
 #include "techniques/builtin_techniques.h"
 
 #include "passes/shared_passes.h"
+#include "techniques/baseline/baseline_techniques.h"
 
 namespace penumbra {
 
 void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   // Each technique folder adds one line here.
+  baseline::register_techniques(registry);
 }
 
 exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry) {

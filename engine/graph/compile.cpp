@@ -1,0 +1,73 @@
+// compile(): the graph compiler as a pipeline of named stages. Each stage lives in its own
+// function (validate.cpp, expand.cpp, schedule.cpp, assign.cpp) and decides one thing.
+#include "graph/compile_state.h"
+
+namespace penumbra::graph {
+
+namespace detail {
+
+void CompileState::error(GraphErrorCode code, const std::string& location, std::string message) {
+  GraphError e;
+  e.code = code;
+  e.file = graph.source_file;
+  e.where = location;
+  e.message = std::move(message);
+  errors.push_back(std::move(e));
+}
+
+int CompileState::find_resource(std::string_view name) const {
+  auto it = resource_index.find(name);
+  return it == resource_index.end() ? -1 : it->second;
+}
+
+int CompileState::version_index(int resource, int version) {
+  auto& slots = version_of[resource];
+  if (static_cast<int>(slots.size()) <= version) slots.resize(version + 1, -1);
+  if (slots[version] < 0) {
+    slots[version] = static_cast<int>(versions.size());
+    VersionState v;
+    v.resource = resource;
+    v.version = version;
+    versions.push_back(std::move(v));
+  }
+  return slots[version];
+}
+
+int CompileState::existing_version(int resource, int version) const {
+  const auto& slots = version_of[resource];
+  return version < static_cast<int>(slots.size()) ? slots[version] : -1;
+}
+
+}  // namespace detail
+
+Checked<CompiledPlan> compile(const GraphDesc& graph, const PassTypeRegistry& registry,
+                              const ParameterSet& params, const CompileSettings& settings,
+                              const CompileOptions& options) {
+  detail::CompileState s{graph, registry, params, settings, options, {}, {}, {}, {}, {}, {},
+                         {}, {}, {}, {}, {}};
+  // Names -> indices, texture sizes resolved from the settings (screen / shadow).
+  detail::index_resources(s);
+  // Every declaration error at once: types, slots, formats, sizes, parameters, repeat.
+  detail::validate_declarations(s);
+  // `enabled` and `repeat` turn declarations into the passes that exist this compile.
+  detail::expand_passes(s);
+  // Bindings -> versions (graph_desc.h rule); missing producers, two writers.
+  detail::resolve_versions(s);
+  if (!s.errors.empty()) return s.errors;
+  // Drop passes whose results reach no output or side effect.
+  detail::cull_passes(s);
+  // Stable topological order; a cycle is an error.
+  detail::order_passes(s);
+  if (!s.errors.empty()) return s.errors;
+  // First/last use of every version in execution order.
+  detail::compute_lifetimes(s);
+  // Versions -> physical textures/buffers, reusing identical descriptors.
+  detail::assign_physical_resources(s);
+  // The executor's view: ordered passes with bindings, parameters, physical resources.
+  detail::build_plan(s);
+  // Memory barriers before each pass after incoherent (image/SSBO) writes.
+  detail::plan_barriers(s);
+  return std::move(s.plan);
+}
+
+}  // namespace penumbra::graph

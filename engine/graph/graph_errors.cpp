@@ -1,0 +1,30 @@
+#include "graph/graph_errors.h"
+
+namespace penumbra::graph {
+
+const char* graph_error_code_name(GraphErrorCode code) {
+  switch (code) {
+    case GraphErrorCode::malformed_json: return "malformed_json";
+    case GraphErrorCode::wrong_json_type: return "wrong_json_type";
+    case GraphErrorCode::unknown_pass_type: return "unknown_pass_type";
+    case GraphErrorCode::unknown_slot: return "unknown_slot";
+    case GraphErrorCode::missing_required_slot: return "missing_required_slot";
+    case GraphErrorCode::unknown_resource: return "unknown_resource";
+    case GraphErrorCode::duplicate_name: return "duplicate_name";
+    case GraphErrorCode::read_without_producer: return "read_without_producer";
+    case GraphErrorCode::cycle: return "cycle";
+    case GraphErrorCode::two_writers: return "two_writers";
+    case GraphErrorCode::format_not_accepted: return "format_not_accepted";
+    case GraphErrorCode::size_mismatch: return "size_mismatch";
+    case GraphErrorCode::param_unknown: return "param_unknown";
+    case GraphErrorCode::param_wrong_type: return "param_wrong_type";
+    case GraphErrorCode::param_out_of_range: return "param_out_of_range";
+    case GraphErrorCode::unknown_param_reference: return "unknown_param_reference";
+    case GraphErrorCode::repeat_out_of_range: return "repeat_out_of_range";
+    case GraphErrorCode::bad_condition: return "bad_condition";
+    case GraphErrorCode::unknown_output: return "unknown_output";
+  }
+  return "?";
+}
+
+}  // namespace penumbra::graph

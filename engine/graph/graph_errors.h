@@ -1,0 +1,64 @@
+#pragma once
+// Errors of parsing and compiling a graph. Each is a penumbra::Error (file, line:col or JSON
+// pointer in `where`, message naming pass / slot / resource) plus a code, so tests and tools
+// can tell the kinds apart without matching text.
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "util/error.h"
+
+namespace penumbra::graph {
+
+enum class GraphErrorCode {
+  malformed_json,       // syntax, nesting too deep, bad UTF-8 (line:col)
+  wrong_json_type,      // a field of the wrong JSON type / missing field (JSON pointer)
+  unknown_pass_type,
+  unknown_slot,
+  missing_required_slot,
+  unknown_resource,
+  duplicate_name,       // two resources / passes with one name
+  read_without_producer,
+  cycle,
+  two_writers,          // two passes produce one version
+  format_not_accepted,  // also a resource kind the slot cannot take
+  size_mismatch,        // within a same-size group
+  param_unknown,        // pass type has no such parameter
+  param_wrong_type,
+  param_out_of_range,
+  unknown_param_reference,  // "$x" with no technique parameter x
+  repeat_out_of_range,
+  bad_condition,            // `enabled` does not parse or has the wrong type
+  unknown_output,
+};
+
+const char* graph_error_code_name(GraphErrorCode code);
+
+struct GraphError : Error {
+  GraphErrorCode code = GraphErrorCode::malformed_json;
+};
+
+using GraphErrors = std::vector<GraphError>;
+
+// A value or every error found (validation reports all errors at once).
+template <class T>
+class [[nodiscard]] Checked {
+ public:
+  Checked(T value) : value_(std::move(value)) {}
+  Checked(GraphErrors errors) : errors_(std::move(errors)) {}
+  explicit operator bool() const { return value_.has_value(); }
+  bool ok() const { return value_.has_value(); }
+  T& value() { return *value_; }
+  const T& value() const { return *value_; }
+  T& operator*() { return *value_; }
+  const T& operator*() const { return *value_; }
+  T* operator->() { return &*value_; }
+  const T* operator->() const { return &*value_; }
+  const GraphErrors& errors() const { return errors_; }
+
+ private:
+  std::optional<T> value_;
+  GraphErrors errors_;
+};
+
+}  // namespace penumbra::graph

@@ -1,0 +1,87 @@
+#pragma once
+// Parameters are described ONCE (ParamDesc) and every consumer reads that description: the
+// sandbox UI (widgets from type/min/max/unit), JSON presets (apply_json/to_json), the CLI
+// (`--set k=v` through set_from_string), pass-type declarations and tests.
+//
+//   ParameterSet params({
+//       {.name = "blur_radius", .type = ParamType::integer, .default_value = 4, .min = 1,
+//        .max = 16, .unit = "texels", .description = "Gaussian radius per pass"},
+//       {.name = "use_blur", .type = ParamType::boolean, .default_value = true,
+//        .description = "Run the blur passes", .structural = true},
+//   });
+//   if (Status s = params.set_from_string("blur_radius=6"); !s) print(s.error());
+//   int r = params.get_int("blur_radius");
+//
+// Structural parameters change the graph's shape (enabled / repeat); changing one means
+// compiling again. Non-structural ones are uniforms: the compiled plan keeps "$name"
+// references to them so the executor reads the current value every frame.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "util/error.h"
+
+namespace penumbra::graph {
+
+enum class ParamType { boolean, integer, real, enumeration };
+
+// bool for boolean, int for integer, double for real, std::string for enumeration.
+using ParamValue = std::variant<bool, int, double, std::string>;
+
+struct ParamDesc {
+  std::string name;
+  ParamType type = ParamType::real;
+  ParamValue default_value = 0.0;
+  double min = 0.0;  // inclusive; ignored for boolean and enumeration
+  double max = 0.0;  // inclusive; min == max == 0 means "unbounded"
+  std::string unit;  // "texels", "shadow-map UV", "world units", ... (empty: unitless)
+  std::string description;  // one line, shown as the UI tooltip and in `--help`
+  bool structural = false;  // true: changing it recompiles the graph
+  std::vector<std::string> options;  // enumeration values
+
+  bool has_range() const { return min != 0.0 || max != 0.0; }
+};
+
+const char* param_type_name(ParamType type);
+// "true", "3", "0.25", "\"mask\"" (strings quoted) — for messages and text dumps.
+std::string param_value_to_string(const ParamValue& value);
+// Does `value` fit `desc` (type, range, enum option)? The error says what was expected.
+Status check_param_value(const ParamDesc& desc, const ParamValue& value);
+// Parses text as a value of desc.type ("true"/"false"/"1"/"0", integer, real, option name).
+Result<ParamValue> parse_param_value(const ParamDesc& desc, std::string_view text);
+
+class ParameterSet {
+ public:
+  ParameterSet() = default;
+  explicit ParameterSet(std::vector<ParamDesc> descs);  // values start at their defaults
+
+  const std::vector<ParamDesc>& descs() const { return descs_; }
+  const ParamDesc* find(std::string_view name) const;
+  const ParamValue* get(std::string_view name) const;
+  bool get_bool(std::string_view name) const;
+  int get_int(std::string_view name) const;
+  double get_real(std::string_view name) const;  // integer params are converted
+  std::string get_enum(std::string_view name) const;
+
+  // Type- and range-checked; on error nothing changes.
+  Status set(std::string_view name, ParamValue value);
+  // "k=v" as given on the command line (`--set blur_radius=6`).
+  Status set_from_string(std::string_view assignment);
+  // A JSON object {"k": v, ...}; all-or-nothing: on any error no value is changed and the
+  // error lists every bad key.
+  Status apply_json(std::string_view json_text);
+  // {"k": v, ...} for every parameter, in declaration order.
+  std::string to_json() const;
+
+  void reset(std::string_view name);
+  void reset_all();
+
+ private:
+  Error unknown_key_error(std::string_view name) const;
+  std::vector<ParamDesc> descs_;
+  std::vector<ParamValue> values_;
+};
+
+}  // namespace penumbra::graph

@@ -1,0 +1,59 @@
+#pragma once
+// Resource descriptions of the render graph: texture formats, size expressions resolved at
+// compile time, and the four kinds of resource. No GL here: the executor maps Format to GL.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace penumbra::graph {
+
+enum class Format { R8, R16F, R32F, RG16F, RG32F, RGBA8, RGBA16F, RGBA32F, DEPTH32F };
+inline constexpr int kFormatCount = 9;
+
+const char* format_name(Format format);
+std::optional<Format> parse_format(std::string_view name);
+int bytes_per_texel(Format format);
+
+// texture:    transient, compiler-owned, may share a physical texture with another resource
+//             of the identical descriptor whose lifetime does not overlap.
+// buffer:     transient storage buffer (byte size); same reuse rule.
+// imported:   provided by the executor every frame (scene, camera, light, output target).
+// persistent: history kept across frames; never shared, never culled away by reuse.
+enum class ResourceKind { texture, buffer, imported, persistent };
+const char* resource_kind_name(ResourceKind kind);
+std::optional<ResourceKind> parse_resource_kind(std::string_view name);
+
+// Compile-time sizes, in pixels / texels.
+struct CompileSettings {
+  int screen_w = 1920;
+  int screen_h = 1080;
+  int shadow_size = 2048;  // shadow map is shadow_size x shadow_size texels
+};
+
+// `screen`, `screen/2`, `screen/4`, `shadow`, `shadow/2` (any divisor 1..64) or `WxH`.
+struct SizeExpr {
+  enum class Base { screen, shadow, fixed } base = Base::screen;
+  int divisor = 1;
+  int width = 0, height = 0;  // fixed only
+
+  static SizeExpr screen(int div = 1) { return {Base::screen, div, 0, 0}; }
+  static SizeExpr shadow(int div = 1) { return {Base::shadow, div, 0, 0}; }
+  static SizeExpr fixed(int w, int h) { return {Base::fixed, 1, w, h}; }
+
+  static std::optional<SizeExpr> parse(std::string_view text);
+  std::string to_string() const;
+  // Integer division, never below 1 texel.
+  void resolve(const CompileSettings& s, int& w, int& h) const;
+};
+
+struct ResourceDecl {
+  std::string name;
+  ResourceKind kind = ResourceKind::texture;
+  Format format = Format::RGBA8;  // texture, persistent
+  SizeExpr size;                  // texture, persistent
+  std::uint64_t bytes = 0;        // buffer
+  std::string location;           // JSON pointer of the declaration ("" from C++)
+};
+
+}  // namespace penumbra::graph

@@ -1,0 +1,36 @@
+#pragma once
+// Quality of a technique's shadow_mask against a reference mask of the same frame, over receiver
+// pixels only (coverage mask; background is excluded from every statistic).
+//
+//   Result<MaskErrors> e = compare_masks(technique_mask, reference_mask, gbuffer_coverage);
+//   if (e) table.add(e->rmse, e->rmse_penumbra, e->max_error, e->ssim);
+#include "metrics/mask_image.h"
+#include "util/error.h"
+
+namespace penumbra::metrics {
+
+// Reference values strictly inside (lo, hi) are "penumbra" pixels.
+inline constexpr float kPenumbraLow = 0.02f;
+inline constexpr float kPenumbraHigh = 0.98f;
+
+struct MaskErrors {
+  double rmse = 0.0;           // sqrt(mean((test - ref)^2)) over receiver pixels
+  double mae = 0.0;            // mean(|test - ref|)
+  double rmse_penumbra = 0.0;  // RMSE over receiver pixels with 0.02 < ref < 0.98 (0 if none)
+  double max_error = 0.0;      // max |test - ref|
+  double ssim = 1.0;           // masked Gaussian-window SSIM, see masked_ssim()
+  size_t pixels = 0;           // receiver pixels compared
+  size_t penumbra_pixels = 0;
+};
+
+// Sizes must match (and coverage, when not empty, must have width * height entries).
+Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& reference,
+                                 const CoverageMask& coverage = {});
+
+// SSIM (Wang et al. 2004) with the standard 11x11 Gaussian window (sigma 1.5 px), C1 = (0.01)^2,
+// C2 = (0.03)^2 for values in [0, 1]. Masked: window statistics are weighted by coverage (background
+// pixels get weight 0 and the weights are renormalised) and the SSIM map is averaged over receiver
+// pixels. Identical images give exactly 1.
+Result<double> masked_ssim(const MaskImage& a, const MaskImage& b, const CoverageMask& coverage = {});
+
+}  // namespace penumbra::metrics

@@ -1,0 +1,251 @@
+#include "scene/builtin_scenes.h"
+
+#include <array>
+#include <cmath>
+#include <functional>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/mesh_builder.h"
+
+namespace penumbra::scene {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+// Resolved parameters: defaults merged with overrides.
+struct Params {
+  std::map<std::string, float> values;
+  float operator()(const std::string& key) const { return values.at(key); }
+};
+
+// Collects meshes and materials; every mesh gets one instance with `place`.
+struct SceneBuilder {
+  Scene scene;
+  uint32_t material(const std::string& name, const glm::vec3& color) {
+    scene.materials.push_back(Material{.name = name, .base_color_factor = glm::vec4(color, 1.0f)});
+    return static_cast<uint32_t>(scene.materials.size() - 1);
+  }
+  void add(Mesh mesh, uint32_t material, const glm::mat4& place) {
+    mesh.material = material;
+    scene.meshes.push_back(std::move(mesh));
+    scene.instances.push_back({static_cast<uint32_t>(scene.meshes.size() - 1), place});
+  }
+};
+
+// Light from the sky at `elevation` degrees above the horizon, coming from `azimuth` degrees
+// (0 = from +Z, 90 = from +X), emitter plane `distance` metres from `target`.
+Light sky_light(const Params& p, const glm::vec3& target) {
+  const float el = glm::radians(p("light_elevation")), az = glm::radians(p("light_azimuth"));
+  Light l;
+  l.type = LightType::directional;
+  l.direction = glm::normalize(glm::vec3(-std::cos(el) * std::sin(az), -std::sin(el), -std::cos(el) * std::cos(az)));
+  l.position = target - l.direction * p("light_distance");
+  l.size = p("light_size");
+  return l;
+}
+
+Mesh ground_mesh(float sx, float sz, const glm::vec3& center) {
+  Mesh m;
+  m.name = "ground";
+  build::add_ground(m, center, sx, sz);
+  return m;
+}
+
+void add_fence(SceneBuilder& b, const Params& p, const glm::mat4& place) {
+  Mesh fence;
+  fence.name = "fence";
+  const int count = std::max(1, static_cast<int>(p("picket_count")));
+  const float w = p("picket_width"), h = p("picket_height"), gap = p("picket_gap");
+  const float pitch = w + gap, x0 = -0.5f * pitch * static_cast<float>(count - 1);
+  for (int i = 0; i < count; ++i)
+    build::add_box(fence, {x0 + pitch * static_cast<float>(i), 0.5f * h, 0.0f}, {0.5f * w, 0.5f * h, 0.02f});
+  const float rail_len = pitch * static_cast<float>(count);
+  for (float y : {0.25f * h, 0.75f * h})  // rails behind the pickets
+    build::add_box(fence, {0.0f, y, -0.045f}, {0.5f * rail_len, 0.03f, 0.025f});
+  b.add(std::move(fence), b.material("fence", {0.85f, 0.82f, 0.75f}), place);
+}
+
+void add_ball(SceneBuilder& b, const Params& p, const glm::mat4& place) {
+  Mesh ball;
+  ball.name = "ball";
+  const float r = p("ball_radius");
+  build::add_sphere(ball, {0.0f, p("ball_height") + r, 0.0f}, r, 48, 24);
+  b.add(std::move(ball), b.material("ball", {0.8f, 0.25f, 0.2f}), place);
+}
+
+void add_poles(SceneBuilder& b, const Params& p, const glm::mat4& place) {
+  Mesh poles;
+  poles.name = "poles";
+  const float r = p("pole_radius");
+  for (int i = 0; i < 7; ++i) {  // standing poles: heights 0.6..2.4 m, tilts 0..36 degrees
+    const float x = -2.4f + 0.8f * static_cast<float>(i), height = 0.6f + 0.3f * static_cast<float>(i);
+    const float tilt = glm::radians(6.0f * static_cast<float>(i)) * (i % 2 ? 1.0f : -1.0f);
+    const glm::vec3 base(x, 0.0f, 0.0f);
+    build::add_cylinder(poles, base, base + height * glm::vec3(std::sin(tilt), std::cos(tilt), 0.0f), r, 12);
+  }
+  for (int i = 0; i < 3; ++i) {  // floating horizontal poles at 0.25, 0.75, 1.5 m
+    const float y = std::array<float, 3>{0.25f, 0.75f, 1.5f}[static_cast<size_t>(i)];
+    const float z = 1.0f + 0.5f * static_cast<float>(i);
+    build::add_cylinder(poles, {-2.0f, y, z}, {2.0f, y, z - 0.6f}, r, 12);
+  }
+  b.add(std::move(poles), b.material("poles", {0.3f, 0.45f, 0.75f}), place);
+}
+
+void add_colonnade(SceneBuilder& b, const Params& p, const glm::mat4& place) {
+  Mesh stone, hanging;
+  stone.name = "colonnade";
+  hanging.name = "hanging_poles";
+  const int columns = std::max(2, static_cast<int>(p("column_count")));
+  const float h = p("column_height"), cr = 0.3f, spacing = 2.0f, half_width = 2.5f;
+  const float x0 = -0.5f * spacing * static_cast<float>(columns - 1), length = spacing * static_cast<float>(columns);
+  for (float z : {-half_width, half_width}) {
+    for (int i = 0; i < columns; ++i) build::add_cylinder(stone, {x0 + spacing * i, 0, z}, {x0 + spacing * i, h, z}, cr, 20);
+    build::add_box(stone, {0.0f, h + 0.2f, z}, {0.5f * length, 0.2f, 0.35f});  // architrave
+    const float ar = 0.5f * spacing - cr;                                      // arch radius
+    for (int i = 0; i + 1 < columns; ++i) {
+      const glm::vec3 c(x0 + spacing * (static_cast<float>(i) + 0.5f), h - ar, z);
+      for (int k = 0; k < 10; ++k) {  // semicircle of 10 voussoir boxes
+        const float a = kPi * (static_cast<float>(k) + 0.5f) / 10.0f;
+        const glm::mat3 rot = glm::mat3(glm::rotate(glm::mat4(1.0f), a, glm::vec3(0, 0, 1)));
+        build::add_box(stone, c + ar * glm::vec3(std::cos(a), std::sin(a), 0.0f), {0.08f, ar * kPi / 20.0f, 0.2f}, rot);
+      }
+    }
+  }
+  const float beam_y = h + 0.55f, hang = p("hanging_length");
+  for (float x : {-0.5f * length + 1.0f, 0.0f, 0.5f * length - 1.0f}) {  // cross beams and what hangs from them
+    build::add_box(stone, {x, beam_y, 0.0f}, {0.1f, 0.1f, half_width + 0.3f});
+    for (float z : {-1.2f, -0.4f, 0.4f, 1.2f})
+      build::add_cylinder(hanging, {x, beam_y, z}, {x + 0.1f * z, beam_y - hang, z}, 0.03f, 10);
+  }
+  b.add(std::move(stone), b.material("stone", {0.78f, 0.74f, 0.66f}), place);
+  b.add(std::move(hanging), b.material("hanging", {0.55f, 0.35f, 0.25f}), place);
+}
+
+const std::vector<ProceduralParam> kLightParams(float size, float elevation, float azimuth, float distance) {
+  return {{"light_size", size, "emitter disk diameter, metres"},
+          {"light_elevation", elevation, "light elevation above the horizon, degrees"},
+          {"light_azimuth", azimuth, "direction the light comes from, degrees (0 = +Z, 90 = +X)"},
+          {"light_distance", distance, "distance of the emitter plane from the scene centre, metres"}};
+}
+
+struct BuiltinScene {
+  std::string name;
+  std::vector<ProceduralParam> params;
+  std::function<void(SceneBuilder&, const Params&)> build;
+};
+
+std::vector<ProceduralParam> join(std::vector<ProceduralParam> a, const std::vector<ProceduralParam>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+const std::vector<ProceduralParam> kFenceParams = {
+    {"picket_count", 14, "number of pickets"},
+    {"picket_height", 1.2f, "picket height, metres"},
+    {"picket_width", 0.08f, "picket width, metres"},
+    {"picket_gap", 0.14f, "gap between pickets, metres"}};
+const std::vector<ProceduralParam> kBallParams = {
+    {"ball_height", 0.5f, "gap between the ground and the bottom of the ball, metres"},
+    {"ball_radius", 0.5f, "ball radius, metres"}};
+const std::vector<ProceduralParam> kPoleParams = {{"pole_radius", 0.04f, "pole radius, metres"}};
+const std::vector<ProceduralParam> kColonnadeParams = {
+    {"column_count", 6, "columns per row"},
+    {"column_height", 3.5f, "column height, metres"},
+    {"hanging_length", 1.4f, "length of the poles hanging from the cross beams, metres"}};
+
+const std::vector<BuiltinScene>& registry() {
+  static const std::vector<BuiltinScene> scenes = {
+      {"fence", join(kFenceParams, kLightParams(0.5f, 40.0f, 0.0f, 8.0f)),
+       [](SceneBuilder& b, const Params& p) {
+         b.add(ground_mesh(8, 8, {0, 0, -1.5f}), b.material("ground", glm::vec3(0.7f)), glm::mat4(1.0f));
+         add_fence(b, p, glm::mat4(1.0f));
+         b.scene.camera = Camera::look_at({2.0f, 3.2f, -5.2f}, {0.0f, 0.3f, -0.9f});
+         b.scene.light = sky_light(p, {0, 0, -0.5f});
+       }},
+      {"ball", join(kBallParams, kLightParams(0.6f, 20.0f, 0.0f, 10.0f)),
+       [](SceneBuilder& b, const Params& p) {
+         b.add(ground_mesh(12, 12, {0, 0, -2.5f}), b.material("ground", glm::vec3(0.7f)), glm::mat4(1.0f));
+         add_ball(b, p, glm::mat4(1.0f));
+         b.scene.camera = Camera::look_at({4.5f, 4.0f, 3.0f}, {0.0f, 0.3f, -2.0f});
+         b.scene.light = sky_light(p, {0, 0, -1.5f});
+       }},
+      {"poles", join(kPoleParams, kLightParams(0.5f, 45.0f, 30.0f, 8.0f)),
+       [](SceneBuilder& b, const Params& p) {
+         b.add(ground_mesh(9, 8, {0, 0, -0.5f}), b.material("ground", glm::vec3(0.7f)), glm::mat4(1.0f));
+         add_poles(b, p, glm::mat4(1.0f));
+         b.scene.camera = Camera::look_at({1.5f, 4.0f, 5.5f}, {0.0f, 0.4f, -0.5f});
+         b.scene.light = sky_light(p, {0, 0, 0});
+       }},
+      {"colonnade", join(kColonnadeParams, kLightParams(0.6f, 55.0f, 35.0f, 14.0f)),
+       [](SceneBuilder& b, const Params& p) {
+         b.add(ground_mesh(16, 10, {0, 0, 0}), b.material("floor", glm::vec3(0.72f, 0.7f, 0.66f)), glm::mat4(1.0f));
+         add_colonnade(b, p, glm::mat4(1.0f));
+         b.scene.camera = Camera::look_at({-7.0f, 3.2f, 3.2f}, {0.5f, 0.6f, 0.0f}, glm::radians(60.0f));
+         b.scene.light = sky_light(p, {0, 0, 0});
+       }},
+      {"showcase",
+       join(join(join(join(kFenceParams, kBallParams), kPoleParams), kColonnadeParams),
+            kLightParams(0.7f, 40.0f, 25.0f, 16.0f)),
+       [](SceneBuilder& b, const Params& p) {
+         b.add(ground_mesh(26, 22, {0, 0, -2.0f}), b.material("ground", glm::vec3(0.7f)), glm::mat4(1.0f));
+         add_colonnade(b, p, glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -8.0f}));
+         add_fence(b, p, glm::translate(glm::mat4(1.0f), {-6.0f, 0.0f, 2.0f}));
+         add_ball(b, p, glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, 2.5f}));
+         add_poles(b, p, glm::translate(glm::mat4(1.0f), {6.0f, 0.0f, 1.5f}));
+         b.scene.camera = Camera::look_at({0.0f, 9.0f, 13.0f}, {0.0f, 0.0f, -2.0f}, glm::radians(55.0f));
+         b.scene.light = sky_light(p, {0, 0, -2.0f});
+       }},
+  };
+  return scenes;
+}
+
+std::string joined_names() {
+  std::string s;
+  for (const BuiltinScene& b : registry()) s += (s.empty() ? "" : ", ") + b.name;
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> builtin_scene_names() {
+  std::vector<std::string> names;
+  for (const BuiltinScene& b : registry()) names.push_back(b.name);
+  return names;
+}
+
+std::vector<ProceduralParam> builtin_scene_params(const std::string& name) {
+  for (const BuiltinScene& b : registry())
+    if (b.name == name) return b.params;
+  return {};
+}
+
+Result<Scene> make_builtin_scene(const std::string& name, const ProceduralParams& overrides) {
+  for (const BuiltinScene& entry : registry()) {
+    if (entry.name != name) continue;
+    Params p;
+    for (const ProceduralParam& d : entry.params) p.values[d.key] = d.default_value;
+    for (const auto& [key, value] : overrides) {
+      if (!p.values.count(key)) {
+        std::string keys;
+        for (const ProceduralParam& d : entry.params) keys += (keys.empty() ? "" : ", ") + d.key;
+        Error e = make_error("unknown parameter '" + key + "' for built-in scene '" + name + "'; valid: " + keys);
+        e.where = "scene " + name;
+        return e;
+      }
+      if (!std::isfinite(value)) return make_error("parameter '" + key + "' of scene '" + name + "' is not finite");
+      p.values[key] = value;
+    }
+    SceneBuilder b;
+    b.scene.name = name;
+    entry.build(b, p);
+    b.scene.bounds = compute_bounds(b.scene);
+    const float extent = glm::length(b.scene.bounds.extent());
+    b.scene.camera.near_plane = 0.05f;
+    b.scene.camera.far_plane = 4.0f * extent + 10.0f;
+    return std::move(b.scene);
+  }
+  return make_error("unknown built-in scene '" + name + "'; valid names: " + joined_names());
+}
+
+}  // namespace penumbra::scene

@@ -1,0 +1,161 @@
+#include "scene/gltf_accessors.h"
+
+#include <cstring>
+
+#include <tiny_gltf.h>
+
+namespace penumbra::scene::gltf {
+
+static Error accessor_error(const std::string& file, const std::string& what, const std::string& msg) {
+  Error e = make_error(msg);
+  e.file = file;
+  e.where = what;
+  return e;
+}
+
+static size_t component_size(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_INT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+static int component_count(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    default: return 0;  // matrices are never vertex attributes or indices we read
+  }
+}
+
+Result<AccessorView> view_accessor(const tinygltf::Model& model, int index, const std::string& file,
+                                   const std::string& what) {
+  const std::string id = "accessor " + std::to_string(index);
+  if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
+    return accessor_error(file, what, id + " does not exist (the file has " +
+                                          std::to_string(model.accessors.size()) + " accessors)");
+  const tinygltf::Accessor& acc = model.accessors[static_cast<size_t>(index)];
+  if (acc.sparse.isSparse) return accessor_error(file, what, id + " is sparse, which is not supported");
+  if (acc.bufferView < 0 || static_cast<size_t>(acc.bufferView) >= model.bufferViews.size())
+    return accessor_error(file, what, id + " has no valid bufferView (index " +
+                                          std::to_string(acc.bufferView) + ")");
+  const tinygltf::BufferView& bv = model.bufferViews[static_cast<size_t>(acc.bufferView)];
+  if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= model.buffers.size())
+    return accessor_error(file, what, "bufferView " + std::to_string(acc.bufferView) +
+                                          " refers to missing buffer " + std::to_string(bv.buffer));
+  const std::vector<unsigned char>& buffer = model.buffers[static_cast<size_t>(bv.buffer)].data;
+
+  AccessorView v;
+  v.component_type = acc.componentType;
+  v.components = component_count(acc.type);
+  v.normalized = acc.normalized;
+  const size_t csize = component_size(acc.componentType);
+  if (csize == 0 || v.components == 0)
+    return accessor_error(file, what, id + " has an unsupported component type " +
+                                          std::to_string(acc.componentType) + " or type " +
+                                          std::to_string(acc.type));
+  v.element_size = csize * static_cast<size_t>(v.components);
+  v.stride = bv.byteStride != 0 ? bv.byteStride : v.element_size;
+  v.count = acc.count;
+  if (v.stride < v.element_size)
+    return accessor_error(file, what, id + " has byteStride " + std::to_string(v.stride) +
+                                          " smaller than its element size " + std::to_string(v.element_size));
+  // Bounds: the view must lie in the buffer, and the last element must end inside the view.
+  // Written so that no intermediate product can overflow.
+  if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
+    return accessor_error(file, what, "bufferView " + std::to_string(acc.bufferView) + " (offset " +
+                                          std::to_string(bv.byteOffset) + ", length " +
+                                          std::to_string(bv.byteLength) + ") lies outside its buffer of " +
+                                          std::to_string(buffer.size()) + " bytes");
+  if (v.count == 0) return accessor_error(file, what, id + " has count 0");
+  const size_t view_len = bv.byteLength;
+  const bool fits = acc.byteOffset <= view_len && v.element_size <= view_len - acc.byteOffset &&
+                    (v.count - 1) <= (view_len - acc.byteOffset - v.element_size) / v.stride;
+  if (!fits)
+    return accessor_error(file, what, id + " (offset " + std::to_string(acc.byteOffset) + ", count " +
+                                          std::to_string(v.count) + ", stride " + std::to_string(v.stride) +
+                                          ") reads past the end of bufferView " +
+                                          std::to_string(acc.bufferView) + " (" + std::to_string(view_len) +
+                                          " bytes)");
+  v.data = buffer.data() + bv.byteOffset + acc.byteOffset;
+  return v;
+}
+
+template <class T>
+static T load(const uint8_t* p) {
+  T t;
+  std::memcpy(&t, p, sizeof(T));  // glTF data need not be aligned
+  return t;
+}
+
+Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor,
+                                         const std::string& file, const std::string& what) {
+  Result<AccessorView> v = view_accessor(model, accessor, file, what);
+  if (!v) return v.error();
+  if (v->component_type != TINYGLTF_COMPONENT_TYPE_FLOAT || v->components != 3)
+    return accessor_error(file, what, "accessor " + std::to_string(accessor) + " must be VEC3 of FLOAT");
+  std::vector<glm::vec3> out(v->count);
+  for (size_t i = 0; i < v->count; ++i) {
+    const uint8_t* p = v->data + i * v->stride;
+    out[i] = {load<float>(p), load<float>(p + 4), load<float>(p + 8)};
+  }
+  return out;
+}
+
+Result<std::vector<glm::vec2>> read_uv(const tinygltf::Model& model, int accessor,
+                                       const std::string& file, const std::string& what) {
+  Result<AccessorView> v = view_accessor(model, accessor, file, what);
+  if (!v) return v.error();
+  if (v->components != 2)
+    return accessor_error(file, what, "accessor " + std::to_string(accessor) + " must be VEC2");
+  std::vector<glm::vec2> out(v->count);
+  for (size_t i = 0; i < v->count; ++i) {
+    const uint8_t* p = v->data + i * v->stride;
+    switch (v->component_type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: out[i] = {load<float>(p), load<float>(p + 4)}; break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = glm::vec2(p[0], p[1]) / 255.0f; break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        out[i] = glm::vec2(load<uint16_t>(p), load<uint16_t>(p + 2)) / 65535.0f;
+        break;
+      default:
+        return accessor_error(file, what, "accessor " + std::to_string(accessor) +
+                                              " has a TEXCOORD component type glTF does not allow");
+    }
+  }
+  return out;
+}
+
+Result<std::vector<uint32_t>> read_indices(const tinygltf::Model& model, int accessor, size_t vertex_count,
+                                           const std::string& file, const std::string& what) {
+  Result<AccessorView> v = view_accessor(model, accessor, file, what);
+  if (!v) return v.error();
+  if (v->components != 1)
+    return accessor_error(file, what, "index accessor " + std::to_string(accessor) + " must be SCALAR");
+  std::vector<uint32_t> out(v->count);
+  for (size_t i = 0; i < v->count; ++i) {
+    const uint8_t* p = v->data + i * v->stride;
+    switch (v->component_type) {
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = p[0]; break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: out[i] = load<uint16_t>(p); break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: out[i] = load<uint32_t>(p); break;
+      default:
+        return accessor_error(file, what, "index accessor " + std::to_string(accessor) +
+                                              " must be unsigned byte, short or int");
+    }
+    if (out[i] >= vertex_count)
+      return accessor_error(file, what, "index " + std::to_string(out[i]) + " at position " +
+                                            std::to_string(i) + " is out of range (the primitive has " +
+                                            std::to_string(vertex_count) + " vertices)");
+  }
+  return out;
+}
+
+}  // namespace penumbra::scene::gltf

@@ -1,0 +1,45 @@
+#pragma once
+// Bounds-checked reading of glTF accessors. tinygltf parses the JSON but does not promise that
+// an accessor's offset/stride/count lie inside its buffer, so every read goes through here:
+// hostile files produce an Error naming the accessor, never an out-of-bounds read.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "util/error.h"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace penumbra::scene::gltf {
+
+// A validated window onto an accessor's bytes: element i starts at data + i * stride and
+// `element_size` bytes of it are readable.
+struct AccessorView {
+  const uint8_t* data = nullptr;
+  size_t count = 0;
+  size_t stride = 0;
+  size_t element_size = 0;
+  int component_type = 0;  // TINYGLTF_COMPONENT_TYPE_*
+  int components = 0;      // 1 (SCALAR) .. 4 (VEC4)
+  bool normalized = false;
+};
+
+// `what` names the use ("POSITION of mesh 'x' primitive 0") for error messages.
+Result<AccessorView> view_accessor(const tinygltf::Model& model, int accessor, const std::string& file,
+                                   const std::string& what);
+
+Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor,
+                                         const std::string& file, const std::string& what);
+// TEXCOORD: float, or normalized unsigned byte / short (glTF 2.0 allows all three).
+Result<std::vector<glm::vec2>> read_uv(const tinygltf::Model& model, int accessor,
+                                       const std::string& file, const std::string& what);
+// Indices: unsigned byte / short / int; each must be < vertex_count.
+Result<std::vector<uint32_t>> read_indices(const tinygltf::Model& model, int accessor,
+                                           size_t vertex_count, const std::string& file,
+                                           const std::string& what);
+
+}  // namespace penumbra::scene::gltf

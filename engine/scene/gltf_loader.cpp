@@ -1,0 +1,242 @@
+#include "scene/gltf_loader.h"
+
+#include <filesystem>
+#include <functional>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+#include "scene/gltf_accessors.h"
+
+namespace penumbra::scene {
+namespace {
+
+Error file_error(const std::string& file, std::string message, std::string where = {}) {
+  Error e = make_error(std::move(message));
+  e.file = file;
+  e.where = std::move(where);
+  return e;
+}
+
+const char* mode_name(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "POINTS";
+    case TINYGLTF_MODE_LINE: return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLES: return "TRIANGLES";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+    default: return "unknown";
+  }
+}
+
+// Any channel layout tinygltf decodes (1-4 channels, 8 or 16 bits) -> RGBA8.
+Result<Image> convert_image(const tinygltf::Image& src, const std::string& file, size_t index) {
+  const std::string where = "image " + std::to_string(index) + " '" + src.uri + src.name + "'";
+  const int bytes = src.bits == 16 ? 2 : 1;
+  if (src.width <= 0 || src.height <= 0 || src.component < 1 || src.component > 4 ||
+      (src.bits != 8 && src.bits != 16))
+    return file_error(file, "image was not decoded (width " + std::to_string(src.width) + ", channels " +
+                                std::to_string(src.component) + ", bits " + std::to_string(src.bits) + ")",
+                      where);
+  const size_t pixels = static_cast<size_t>(src.width) * static_cast<size_t>(src.height);
+  if (src.image.size() < pixels * static_cast<size_t>(src.component * bytes))
+    return file_error(file, "decoded image data is shorter than width x height x channels", where);
+  Image img;
+  img.name = src.name.empty() ? src.uri : src.name;
+  img.width = src.width;
+  img.height = src.height;
+  img.pixels.resize(pixels * 4);
+  for (size_t p = 0; p < pixels; ++p) {
+    uint8_t c[4] = {0, 0, 0, 255};
+    for (int k = 0; k < src.component; ++k)  // 16-bit: keep the high byte (little endian)
+      c[k] = src.image[(p * static_cast<size_t>(src.component) + static_cast<size_t>(k)) * bytes + (bytes - 1)];
+    if (src.component == 1 || src.component == 2) {  // grey (+alpha)
+      c[3] = src.component == 2 ? c[1] : 255;
+      c[1] = c[2] = c[0];
+    }
+    std::copy(c, c + 4, img.pixels.begin() + static_cast<std::ptrdiff_t>(p * 4));
+  }
+  return img;
+}
+
+Material convert_material(const tinygltf::Model& model, const tinygltf::Material& m) {
+  Material out;
+  out.name = m.name;
+  const auto& f = m.pbrMetallicRoughness.baseColorFactor;
+  if (f.size() == 4) out.base_color_factor = glm::vec4(f[0], f[1], f[2], f[3]);
+  const int tex = m.pbrMetallicRoughness.baseColorTexture.index;
+  if (tex >= 0 && static_cast<size_t>(tex) < model.textures.size()) {
+    const int source = model.textures[static_cast<size_t>(tex)].source;
+    if (source >= 0 && static_cast<size_t>(source) < model.images.size()) out.base_color_texture = source;
+  }
+  out.alpha_mode = m.alphaMode == "MASK" ? AlphaMode::mask
+                   : m.alphaMode == "BLEND" ? AlphaMode::blend : AlphaMode::opaque;
+  out.alpha_cutoff = static_cast<float>(m.alphaCutoff);
+  out.double_sided = m.doubleSided;
+  return out;
+}
+
+// Flat normals: de-index so every triangle owns its three vertices, then use the face normal.
+void make_flat_normals(Mesh& mesh) {
+  std::vector<Vertex> flat;
+  flat.reserve(mesh.indices.size());
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    Vertex v[3] = {mesh.vertices[mesh.indices[t]], mesh.vertices[mesh.indices[t + 1]],
+                   mesh.vertices[mesh.indices[t + 2]]};
+    glm::vec3 n = glm::cross(v[1].position - v[0].position, v[2].position - v[0].position);
+    const float len = glm::length(n);
+    n = len > 0.0f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);  // degenerate triangle: any unit normal
+    for (Vertex& x : v) { x.normal = n; flat.push_back(x); }
+  }
+  mesh.vertices = std::move(flat);
+  mesh.indices.resize(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = static_cast<uint32_t>(i);
+}
+
+Result<Mesh> convert_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                               const std::string& where, uint32_t default_material, const std::string& file) {
+  const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+  if (mode != TINYGLTF_MODE_TRIANGLES)
+    return file_error(file, std::string("unsupported primitive mode ") + mode_name(mode) + " (" +
+                                std::to_string(mode) + "); only TRIANGLES (4) is supported", where);
+  const auto pos_it = prim.attributes.find("POSITION");
+  if (pos_it == prim.attributes.end()) return file_error(file, "primitive has no POSITION attribute", where);
+  Result<std::vector<glm::vec3>> positions = gltf::read_vec3(model, pos_it->second, file, where + " POSITION");
+  if (!positions) return positions.error();
+  const size_t n = positions->size();
+
+  Mesh mesh;
+  mesh.vertices.resize(n);
+  for (size_t i = 0; i < n; ++i) mesh.vertices[i].position = (*positions)[i];
+  bool has_normals = false;
+  if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+    Result<std::vector<glm::vec3>> normals = gltf::read_vec3(model, it->second, file, where + " NORMAL");
+    if (!normals) return normals.error();
+    if (normals->size() != n) return file_error(file, "NORMAL count differs from POSITION count", where);
+    for (size_t i = 0; i < n; ++i) mesh.vertices[i].normal = (*normals)[i];
+    has_normals = true;
+  }
+  if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
+    Result<std::vector<glm::vec2>> uvs = gltf::read_uv(model, it->second, file, where + " TEXCOORD_0");
+    if (!uvs) return uvs.error();
+    if (uvs->size() != n) return file_error(file, "TEXCOORD_0 count differs from POSITION count", where);
+    for (size_t i = 0; i < n; ++i) mesh.vertices[i].uv = (*uvs)[i];
+  }
+  if (prim.indices >= 0) {
+    Result<std::vector<uint32_t>> idx = gltf::read_indices(model, prim.indices, n, file, where + " indices");
+    if (!idx) return idx.error();
+    mesh.indices = std::move(*idx);
+  } else {
+    mesh.indices.resize(n);
+    for (size_t i = 0; i < n; ++i) mesh.indices[i] = static_cast<uint32_t>(i);
+  }
+  if (mesh.indices.size() % 3 != 0)
+    return file_error(file, "TRIANGLES primitive has " + std::to_string(mesh.indices.size()) +
+                                " indices, not a multiple of 3", where);
+  if (!has_normals) make_flat_normals(mesh);
+  mesh.material = prim.material >= 0 && static_cast<size_t>(prim.material) < model.materials.size()
+                      ? static_cast<uint32_t>(prim.material) : default_material;
+  return mesh;
+}
+
+glm::mat4 local_transform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::dmat4 m = glm::make_mat4(node.matrix.data());  // glTF is column-major like GLM
+    return glm::mat4(m);
+  }
+  glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+  if (node.translation.size() == 3)
+    t[3] = glm::vec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+  if (node.rotation.size() == 4)  // glTF quaternion order is (x, y, z, w)
+    r = glm::mat4_cast(glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                                 static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2])));
+  if (node.scale.size() == 3)
+    s = glm::scale(glm::mat4(1.0f), glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+  return t * r * s;
+}
+
+}  // namespace
+
+Result<Scene> load_gltf(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    return file_error(path, "file not found (expected a .gltf or .glb file)");
+
+  tinygltf::TinyGLTF loader;
+  tinygltf::Model model;
+  std::string err, warn;
+  const bool binary = std::filesystem::path(path).extension() == ".glb";
+  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                         : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  if (!ok) {
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    return file_error(path, std::string("invalid or truncated ") + (binary ? ".glb" : ".gltf") +
+                                " file (missing buffer/image files are reported here too): " + err);
+  }
+
+  Scene scene;
+  scene.name = std::filesystem::path(path).stem().string();
+  scene.source_file = path;
+  for (size_t i = 0; i < model.images.size(); ++i) {
+    Result<Image> img = convert_image(model.images[i], path, i);
+    if (!img) return img.error();
+    scene.images.push_back(std::move(*img));
+  }
+  for (const tinygltf::Material& m : model.materials) scene.materials.push_back(convert_material(model, m));
+  const uint32_t default_material = static_cast<uint32_t>(scene.materials.size());
+  scene.materials.push_back(Material{.name = "default"});
+
+  // glTF mesh i -> scene.meshes[first[i] .. first[i] + count[i]) (one Mesh per primitive).
+  std::vector<size_t> first(model.meshes.size()), count(model.meshes.size());
+  for (size_t mi = 0; mi < model.meshes.size(); ++mi) {
+    first[mi] = scene.meshes.size();
+    const tinygltf::Mesh& gm = model.meshes[mi];
+    for (size_t pi = 0; pi < gm.primitives.size(); ++pi) {
+      const std::string where = "mesh " + std::to_string(mi) + " '" + gm.name + "' primitive " + std::to_string(pi);
+      Result<Mesh> mesh = convert_primitive(model, gm.primitives[pi], where, default_material, path);
+      if (!mesh) return mesh.error();
+      mesh->name = gm.name;
+      scene.meshes.push_back(std::move(*mesh));
+    }
+    count[mi] = scene.meshes.size() - first[mi];
+  }
+  if (scene.meshes.empty()) return file_error(path, "file contains no meshes");
+
+  // Flatten the node hierarchy. A depth cap guards against cyclic children in hostile files.
+  std::function<Status(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent,
+                                                                int depth) -> Status {
+    if (ni < 0 || static_cast<size_t>(ni) >= model.nodes.size())
+      return file_error(path, "node index " + std::to_string(ni) + " does not exist");
+    if (depth > 256) return file_error(path, "node hierarchy deeper than 256 levels (cycle?)",
+                                       "node " + std::to_string(ni));
+    const tinygltf::Node& node = model.nodes[static_cast<size_t>(ni)];
+    const glm::mat4 world = parent * local_transform(node);
+    if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < model.meshes.size())
+      for (size_t k = 0; k < count[static_cast<size_t>(node.mesh)]; ++k)
+        scene.instances.push_back({static_cast<uint32_t>(first[static_cast<size_t>(node.mesh)] + k), world});
+    for (int child : node.children)
+      if (Status s = visit(child, world, depth + 1); !s) return s;
+    return {};
+  };
+  if (!model.scenes.empty()) {
+    const size_t si = model.defaultScene >= 0 && static_cast<size_t>(model.defaultScene) < model.scenes.size()
+                          ? static_cast<size_t>(model.defaultScene) : 0;
+    for (int root : model.scenes[si].nodes)
+      if (Status s = visit(root, glm::mat4(1.0f), 0); !s) return s.error();
+  } else {
+    // No scene: show every mesh once at the origin rather than nothing.
+    for (size_t m = 0; m < scene.meshes.size(); ++m) scene.instances.push_back({static_cast<uint32_t>(m), glm::mat4(1.0f)});
+  }
+  if (scene.instances.empty()) return file_error(path, "the default scene places no meshes (no node refers to a mesh)");
+
+  scene.bounds = compute_bounds(scene);
+  scene.camera = frame_bounds(scene.bounds);
+  scene.light = directional_light_for(scene.bounds, glm::vec3(-0.35f, -1.0f, -0.45f), 0.04f);
+  return scene;
+}
+
+}  // namespace penumbra::scene

@@ -1,0 +1,24 @@
+#pragma once
+// glTF 2.0 (.gltf + external/embedded buffers, or .glb) -> Scene, through tinygltf 2.7.0.
+// Supported: TRIANGLES primitives (indexed or not; u8/u16/u32 indices), POSITION, NORMAL (flat
+// normals are generated when missing), TEXCOORD_0, node hierarchy (matrix or TRS), base colour
+// factor and texture, alpha mode OPAQUE/MASK/BLEND with cutoff, double-sided.
+// Not supported (rejected with an Error): other primitive modes, sparse accessors.
+// Ignored: skins, animations, cameras, other textures (normal, metal-rough, ...), samplers
+// (wrap = repeat is assumed).
+//
+//   Result<Scene> s = load_gltf("assets/Fox/Fox.gltf");
+//   if (!s) { spdlog::error("{}", s.error().to_string()); return s.error().exit_code(); }
+#include <string>
+
+#include "scene/scene.h"
+#include "util/error.h"
+
+namespace penumbra::scene {
+
+// Every Error carries `file` = path; `where` names the mesh/primitive/accessor at fault.
+// The default camera frames the bounds; the default light is a directional light from above at
+// an angle whose emitter diameter is 4% of the scene's bounding-sphere diameter.
+Result<Scene> load_gltf(const std::string& path);
+
+}  // namespace penumbra::scene

@@ -1,0 +1,122 @@
+#include "scene/light.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/scene.h"
+
+namespace penumbra::scene {
+
+Light directional_light_for(const Bounds& bounds, const glm::vec3& direction, float size_fraction,
+                            float distance_in_radii) {
+  Light l;
+  l.type = LightType::directional;
+  l.direction = glm::normalize(direction);
+  const glm::vec3 center = bounds.empty() ? glm::vec3(0.0f) : bounds.center();
+  const float radius = bounds.empty() ? 1.0f : std::max(bounds.radius(), 1e-3f);
+  l.position = center - l.direction * (distance_in_radii * radius);
+  l.size = size_fraction * 2.0f * radius;
+  return l;
+}
+
+void emitter_basis(const glm::vec3& d, glm::vec3& tangent, glm::vec3& bitangent) {
+  // Pick the world axis least aligned with d so the cross product is well conditioned.
+  const glm::vec3 helper = std::abs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  tangent = glm::normalize(glm::cross(helper, d));
+  bitangent = glm::cross(d, tangent);
+}
+
+static glm::mat4 light_view(const Light& light) {
+  glm::vec3 t, b;
+  emitter_basis(light.direction, t, b);
+  // Use the bitangent as "up" so the shadow map's axes match the emitter basis.
+  return glm::lookAt(light.position, light.position + light.direction, b);
+}
+
+ShadowFrustum shadow_frustum(const Light& light, const Bounds& bounds_in) {
+  Bounds bounds = bounds_in;
+  if (bounds.empty()) { bounds.extend(glm::vec3(-1.0f)); bounds.extend(glm::vec3(1.0f)); }
+  ShadowFrustum f;
+  f.view = light_view(light);
+  // Bounds corners in light space: x,y across the emitter plane, -z = depth from the light.
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 c((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
+                      (i & 4) ? bounds.max.z : bounds.min.z);
+    const glm::vec3 p = glm::vec3(f.view * glm::vec4(c, 1.0f));
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const float depth_min = -hi.z, depth_max = -lo.z;  // distances in front of the light
+  const float depth_pad = 0.01f * (depth_max - depth_min) + 1e-4f;
+  if (light.type == LightType::directional) {
+    f.orthographic = true;
+    const glm::vec2 c = 0.5f * (glm::vec2(lo) + glm::vec2(hi));
+    const float half = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y) * 1.01f;
+    f.near_plane = depth_min - depth_pad;
+    f.far_plane = depth_max + depth_pad;
+    f.proj = glm::ortho(c.x - half, c.x + half, c.y - half, c.y + half, f.near_plane, f.far_plane);
+    f.width_world = 2.0f * half;
+  } else {
+    f.orthographic = false;
+    f.far_plane = std::max(depth_max + depth_pad, 1e-2f);
+    f.near_plane = std::max(depth_min - depth_pad, 1e-3f * f.far_plane);
+    const float fov = std::clamp(2.0f * light.spot_angle, glm::radians(1.0f), glm::radians(170.0f));
+    f.proj = glm::perspective(fov, 1.0f, f.near_plane, f.far_plane);
+    f.width_world = 0.0f;
+  }
+  f.view_proj = f.proj * f.view;
+  return f;
+}
+
+// PCG-style integer hash (Jarzynski & Olano 2020): cheap, well mixed, identical on CPU and GPU.
+static uint32_t pcg_hash(uint32_t v) {
+  const uint32_t state = v * 747796405u + 2891336453u;
+  const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+static float unit_float(uint32_t h) { return static_cast<float>(h >> 8) * (1.0f / 16777216.0f); }
+
+// Shirley & Chiu 1997 concentric square -> disk mapping, u in [0,1)^2 -> unit disk.
+static glm::vec2 concentric_disk(glm::vec2 u) {
+  const glm::vec2 o = 2.0f * u - 1.0f;
+  if (o.x == 0.0f && o.y == 0.0f) return glm::vec2(0.0f);
+  constexpr float kQuarterPi = 0.78539816339f;
+  float r, theta;
+  if (std::abs(o.x) > std::abs(o.y)) {
+    r = o.x;
+    theta = kQuarterPi * (o.y / o.x);
+  } else {
+    r = o.y;
+    theta = 2.0f * kQuarterPi - kQuarterPi * (o.x / o.y);
+  }
+  return r * glm::vec2(std::cos(theta), std::sin(theta));
+}
+
+std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32_t seed) {
+  std::vector<glm::vec3> points;
+  if (count <= 0) return points;
+  int rows = static_cast<int>(std::sqrt(static_cast<double>(count)));
+  while (rows > 1 && count % rows != 0) --rows;
+  const int cols = count / rows;
+  glm::vec3 t, b;
+  emitter_basis(glm::normalize(light.direction), t, b);
+  const float radius = light.radius();
+  points.reserve(static_cast<size_t>(count));
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      const uint32_t stratum = static_cast<uint32_t>(r * cols + c);
+      const uint32_t h1 = pcg_hash(seed * 0x9E3779B9u ^ pcg_hash(stratum * 2u));
+      const uint32_t h2 = pcg_hash(h1 ^ pcg_hash(stratum * 2u + 1u));
+      const glm::vec2 u((static_cast<float>(c) + unit_float(h1)) / static_cast<float>(cols),
+                        (static_cast<float>(r) + unit_float(h2)) / static_cast<float>(rows));
+      const glm::vec2 d = concentric_disk(u) * radius;
+      points.push_back(light.position + d.x * t + d.y * b);
+    }
+  }
+  return points;
+}
+
+}  // namespace penumbra::scene

@@ -1,0 +1,74 @@
+#pragma once
+// Area lights with a physical size, shared by every technique and both references so they agree
+// on what "soft" means.
+//
+// THE definition of size: `Light::size` is the DIAMETER (world units) of a flat emitter disk
+// centred at `position`, lying in the plane perpendicular to `direction`. Same for both types:
+//  - directional: the disk sits at `position`, at a finite distance from the scene along
+//    -direction. Rays from a receiver go to points on that disk: a "planar area light at finite
+//    distance", which is exactly what PCSS with an orthographic shadow map assumes (the blocker
+//    and receiver depths are measured from the emitter plane; Fernando 2005, eq. 1:
+//    w_penumbra = (d_receiver - d_blocker) * size / d_blocker).
+//  - spot: the disk sits at `position` and faces `direction`; the cone half-angle is spot_angle.
+//
+//   Light l = directional_light_for(bounds, glm::normalize(glm::vec3(-1, -2, -1)), 0.05f);
+//   ShadowFrustum f = shadow_frustum(l, bounds);     // for the shadow-map pass
+//   auto pts = light_sample_points(l, 256, 0);       // for the references
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace penumbra::scene {
+
+struct Bounds;
+
+enum class LightType { directional, spot };
+
+struct Light {
+  LightType type = LightType::directional;
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit, pointing from the light into the scene
+  glm::vec3 position{0.0f, 10.0f, 0.0f};   // emitter disk centre, world units
+  float size = 0.5f;                       // emitter disk DIAMETER, world units
+  float spot_angle = glm::radians(35.0f);  // spot cone half-angle, radians
+  glm::vec3 color{1.0f};                   // linear RGB
+  float intensity = 3.0f;                  // multiplier on color (unitless, for the lighting pass)
+
+  float radius() const { return 0.5f * size; }
+};
+
+// A directional light looking along `direction` at the centre of `bounds`, with its emitter
+// plane placed `distance_in_radii` bounding-sphere radii away from the centre and a disk
+// diameter of `size_fraction` x the scene's bounding-sphere diameter.
+Light directional_light_for(const Bounds& bounds, const glm::vec3& direction,
+                            float size_fraction, float distance_in_radii = 2.0f);
+
+// The light's view for a shadow map.
+struct ShadowFrustum {
+  glm::mat4 view{1.0f};       // world -> light space (looking down -Z along `direction`)
+  glm::mat4 proj{1.0f};       // OpenGL clip convention (z in [-1, 1])
+  glm::mat4 view_proj{1.0f};
+  float near_plane = 0.0f;    // world units from the emitter plane / light position
+  float far_plane = 1.0f;
+  bool orthographic = true;
+  // Orthographic only: width (= height, square) of the frustum in world units, to convert a
+  // world size into shadow-map UV: uv = world / width_world. 0 for spot lights.
+  float width_world = 0.0f;
+};
+
+// directional: orthographic, square, fitted to `bounds` as seen from the emitter plane, near/far
+// fitted to the bounds' depth range. spot: perspective with fov = 2 * spot_angle, near/far fitted
+// to the bounds' distance along `direction` (near >= 1e-3 x far).
+ShadowFrustum shadow_frustum(const Light& light, const Bounds& bounds);
+
+// Orthonormal basis (tangent, bitangent) of the emitter plane; deterministic for a direction so
+// CPU and GPU references place samples identically.
+void emitter_basis(const glm::vec3& direction, glm::vec3& tangent, glm::vec3& bitangent);
+
+// M world-space points on the emitter disk: M = rows x cols strata of the unit square (rows =
+// the largest divisor of M not above sqrt(M)), each jittered by a hash of (seed, stratum), then
+// mapped to the disk with Shirley & Chiu's concentric mapping (area-preserving, so strata stay
+// equal-area on the disk). The ONE sampling of the light used by both references.
+std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32_t seed);
+
+}  // namespace penumbra::scene

@@ -1,0 +1,94 @@
+#pragma once
+// CPU-side scene data: flat, contiguous arrays that upload to GL as they are (one vertex buffer
+// and one index buffer per Mesh, RGBA8 images, a world matrix per Instance) and that the Embree
+// reference flattens to world-space triangles. Units: world units (metres for built-in scenes),
+// Y up, right-handed (glTF convention).
+//
+//   Result<Scene> s = load_scene("showcase");          // or "models/Fox.gltf"
+//   for (const Instance& inst : s->instances) draw(s->meshes[inst.mesh], inst.world);
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/camera.h"
+#include "scene/light.h"
+
+namespace penumbra::scene {
+
+struct Vertex {
+  glm::vec3 position{0.0f};  // object space
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};  // object space, unit
+  glm::vec2 uv{0.0f};        // glTF convention: (0,0) = top-left of the image
+};
+
+// One glTF primitive: triangles only (3 indices per triangle, all < vertices.size()).
+struct Mesh {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;
+  uint32_t material = 0;  // index into Scene::materials (always valid: loaders add a default)
+  size_t triangle_count() const { return indices.size() / 3; }
+};
+
+enum class AlphaMode { opaque, mask, blend };
+
+struct Material {
+  std::string name;
+  glm::vec4 base_color_factor{1.0f};  // linear RGBA multiplier
+  int base_color_texture = -1;        // index into Scene::images, -1 = none
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  float alpha_cutoff = 0.5f;          // MASK: alpha < cutoff is a hole (glTF 2.0 semantics)
+  bool double_sided = false;
+};
+
+// Decoded texture, always 4 channels of 8 bits, rows top to bottom.
+struct Image {
+  std::string name;
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> pixels;  // width * height * 4 bytes
+};
+
+// One placement of a mesh; the glTF node hierarchy is flattened into these.
+struct Instance {
+  uint32_t mesh = 0;        // index into Scene::meshes
+  glm::mat4 world{1.0f};    // object -> world
+};
+
+// Axis-aligned box in world units. Default-constructed = empty (min > max).
+struct Bounds {
+  glm::vec3 min{std::numeric_limits<float>::max()};
+  glm::vec3 max{std::numeric_limits<float>::lowest()};
+  bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+  void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+  void extend(const Bounds& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  glm::vec3 extent() const { return max - min; }
+  float radius() const { return 0.5f * glm::length(max - min); }  // of the bounding sphere
+};
+
+struct Scene {
+  std::string name;
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Image> images;
+  std::vector<Instance> instances;
+  Bounds bounds;         // world-space AABB of all instanced vertices
+  Camera camera;         // default view
+  Light light;           // default light
+  std::string source_file;  // empty for built-in scenes
+
+  // Triangles drawn (instances x mesh triangles).
+  size_t triangle_count() const;
+};
+
+// World-space AABB of every instanced vertex (exact, not a transformed-box approximation).
+Bounds compute_bounds(const Scene& scene);
+
+// A camera framing `bounds` from the front-above (+Z, +Y side), whole box in view.
+Camera frame_bounds(const Bounds& bounds, float fov_y_radians = glm::radians(50.0f));
+
+}  // namespace penumbra::scene

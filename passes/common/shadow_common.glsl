@@ -1,0 +1,35 @@
+// Light-space helpers shared by every pass that reads a shadow map. The C++ side sets these
+// uniforms with set_shadow_uniforms() (passes/common/shadow_uniforms.h).
+uniform mat4 u_light_view_proj;   // world -> light clip space
+uniform mat4 u_light_view;        // world -> light view space (looking down -Z)
+uniform float u_light_near;       // world units from the emitter plane / light position
+uniform float u_light_far;
+uniform int u_light_ortho;        // 1: directional (orthographic map), 0: spot (perspective)
+uniform float u_light_size_world; // emitter disk diameter, world units (Light::size)
+uniform float u_light_frustum_width; // ortho: frustum width in world units; spot: width of the
+                                     // frustum at distance 1 (2 tan(fov/2))
+uniform vec3 u_light_dir;         // unit, light -> scene
+uniform vec3 u_light_pos;         // emitter centre
+
+// (shadow-map uv in [0,1], window depth in [0,1]) of a world position.
+vec3 shadow_coord(vec3 world) {
+  vec4 clip = u_light_view_proj * vec4(world, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  return ndc * 0.5 + 0.5;
+}
+
+// World-unit distance from the light (emitter plane for directional, light position along the
+// axis for spot) of a window depth read from the shadow map.
+float light_distance(float window_depth) {
+  float z = window_depth * 2.0 - 1.0;
+  if (u_light_ortho == 1) return u_light_near + window_depth * (u_light_far - u_light_near);
+  return 2.0 * u_light_near * u_light_far / (u_light_far + u_light_near - z * (u_light_far - u_light_near));
+}
+
+// Light size expressed in shadow-map UV at light distance `d` (world units). For an ortho map
+// the UV scale does not depend on distance; for a perspective map a world size at distance d
+// covers size / (d * frustum width at distance 1) of the map.
+float light_size_uv_at(float d) {
+  if (u_light_ortho == 1) return u_light_size_world / u_light_frustum_width;
+  return u_light_size_world / (max(d, 1e-4) * u_light_frustum_width);
+}

@@ -1,0 +1,21 @@
+#include "passes/common/shadow_uniforms.h"
+
+#include <cmath>
+
+namespace penumbra::passes {
+
+void set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
+  const scene::ShadowFrustum& s = frame.shadow;
+  p.set("u_light_view_proj", s.view_proj);
+  p.set("u_light_view", s.view);
+  p.set("u_light_near", s.near_plane);
+  p.set("u_light_far", s.far_plane);
+  p.set("u_light_ortho", s.orthographic ? 1 : 0);
+  p.set("u_light_size_world", frame.light.size);
+  float width = s.orthographic ? s.width_world : 2.0f * std::tan(frame.light.spot_angle);
+  p.set("u_light_frustum_width", width);
+  p.set("u_light_dir", frame.light.direction);
+  p.set("u_light_pos", frame.light.position);
+}
+
+}  // namespace penumbra::passes

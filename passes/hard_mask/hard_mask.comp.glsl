@@ -1,0 +1,26 @@
+#version 450 core
+// Hard shadow: one depth comparison per pixel at the nearest shadow-map texel; the mask is
+// exactly 0 or 1.
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "../common/shadow_common.glsl"
+layout(r16f, binding = 0) uniform writeonly image2D u_mask;
+uniform sampler2D u_position;
+uniform sampler2D u_shadow_map;   // raw depth, nearest
+uniform float u_depth_bias;       // window depth units
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
+  vec4 pos = texelFetch(u_position, p, 0);
+  float lit = 1.0;
+  if (pos.w > 0.0) {
+    vec3 c = shadow_coord(pos.xyz);
+    if (all(greaterThanEqual(c, vec3(0.0))) && all(lessThanEqual(c, vec3(1.0)))) {
+      ivec2 size = textureSize(u_shadow_map, 0);
+      ivec2 t = clamp(ivec2(c.xy * vec2(size)), ivec2(0), size - 1);
+      float blocker = texelFetch(u_shadow_map, t, 0).r;
+      lit = c.z - u_depth_bias <= blocker ? 1.0 : 0.0;
+    }
+  }
+  imageStore(u_mask, p, vec4(lit));
+}

@@ -1,0 +1,41 @@
+#version 450 core
+// Lambert + ambient with base colour, shadowed by the technique's shadow_mask, then tone
+// mapped (Reinhard on luminance-free RGB) and encoded with gamma 2.2 into RGBA8.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba8, binding = 0) uniform writeonly image2D u_color;
+uniform sampler2D u_albedo;
+uniform sampler2D u_normal;
+uniform sampler2D u_position;
+uniform sampler2D u_shadow_mask;
+uniform vec3 u_light_dir;     // unit, light -> scene
+uniform vec3 u_light_pos;
+uniform vec3 u_light_color;   // linear, times intensity
+uniform int u_light_spot;
+uniform float u_spot_cos;     // cos(cone half-angle)
+uniform float u_ambient;
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(u_color);
+  if (any(greaterThanEqual(p, size))) return;
+  vec4 pos = texelFetch(u_position, p, 0);
+  if (pos.w <= 0.0) {
+    // Background: a quiet vertical gradient so silhouettes read against it.
+    float t = float(p.y) / float(size.y);
+    imageStore(u_color, p, vec4(mix(vec3(0.55, 0.6, 0.68), vec3(0.25, 0.33, 0.45), t), 1.0));
+    return;
+  }
+  vec3 albedo = texelFetch(u_albedo, p, 0).rgb;
+  vec3 n = normalize(texelFetch(u_normal, p, 0).xyz);
+  float visibility = clamp(texelFetch(u_shadow_mask, p, 0).r, 0.0, 1.0);
+  vec3 l = -u_light_dir;
+  float cone = 1.0;
+  if (u_light_spot == 1) {
+    l = normalize(u_light_pos - pos.xyz);
+    cone = smoothstep(u_spot_cos, mix(u_spot_cos, 1.0, 0.2), dot(-l, u_light_dir));
+  }
+  float ndotl = max(dot(n, l), 0.0);
+  vec3 radiance = albedo * (u_ambient + u_light_color * ndotl * visibility * cone);
+  vec3 mapped = radiance / (1.0 + radiance);
+  imageStore(u_color, p, vec4(pow(mapped, vec3(1.0 / 2.2)), 1.0));
+}

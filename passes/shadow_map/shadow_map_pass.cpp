@@ -1,0 +1,77 @@
+// The light's depth map (DEPTH32F, raster). Two biases fight shadow acne:
+//  - slope-scaled constant bias, applied here while rendering: glPolygonOffset(slope_bias,
+//    constant_bias) adds slope_bias * max|dz/dx, dz/dy| + constant_bias * r to each depth,
+//    r being the smallest resolvable depth step. Steep casters get more bias, flat ones less.
+//  - receiver-plane depth bias, applied where the map is read (passes/common/receiver_plane.glsl):
+//    each filter tap compares against the receiver's plane extrapolated to the tap instead of
+//    the centre depth, so wide PCF/PCSS kernels stay acne-free on slanted receivers.
+// Depth stored is the light's window depth in [0, 1]: linear in distance for a directional
+// (orthographic) light, hyperbolic for a spot light (light_distance() in shadow_common.glsl).
+#include "passes/shadow_map/shadow_map_pass.h"
+
+#include "exec/gpu_scene.h"
+#include "gl/framebuffer.h"
+
+namespace penumbra::passes {
+namespace {
+
+using graph::Access;
+using graph::Format;
+using graph::ParamDesc;
+using graph::ParamType;
+using graph::SlotKind;
+using graph::Usage;
+
+class ShadowMapPass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    gl::ShaderProgram& p = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
+                                        .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
+    if (!p.valid()) return *p.last_error();
+    gl::Texture& depth = ctx.texture("depth");
+    if (attached_ != depth.id()) {
+      fb_ = gl::Framebuffer();
+      fb_.attach_depth(depth);
+      if (Status s = fb_.finish(); !s) return s;
+      attached_ = depth.id();
+    }
+    fb_.bind();
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(fb_.id(), GL_DEPTH, 0, &one);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(ctx.real("slope_bias"), ctx.real("constant_bias"));
+    p.program().set("u_light_view_proj", ctx.frame().shadow.view_proj);
+    if (ctx.frame().scene) ctx.frame().scene->draw(p.program(), 0, true);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_TEST);
+    return {};
+  }
+
+ private:
+  gl::Framebuffer fb_;
+  GLuint attached_ = 0;
+};
+
+}  // namespace
+
+exec::PassType shadow_map_pass_type() {
+  graph::PassTypeDecl d;
+  d.name = "shadow_map";
+  d.description = "Light-view depth map with slope-scaled constant bias (raster)";
+  d.slots = {
+      {"scene", Access::read, SlotKind::imported, {}, Usage::imported, true},
+      {"light", Access::read, SlotKind::imported, {}, Usage::imported, true},
+      {"depth", Access::write, SlotKind::texture, {Format::DEPTH32F}, Usage::depth_attachment, true},
+  };
+  ParamDesc slope{.name = "slope_bias", .type = ParamType::real, .default_value = 1.5, .min = 0.0, .max = 10.0};
+  slope.description = "glPolygonOffset factor: depth bias per unit of depth slope";
+  ParamDesc constant{.name = "constant_bias", .type = ParamType::real, .default_value = 2.0, .min = 0.0, .max = 1000.0};
+  constant.unit = "depth steps";
+  constant.description = "glPolygonOffset units: constant bias in smallest depth steps";
+  d.params = {slope, constant};
+  return {d, [] { return std::make_unique<ShadowMapPass>(); }};
+}
+
+}  // namespace penumbra::passes

@@ -1,0 +1,17 @@
+#include "passes/shared_passes.h"
+
+#include "passes/gbuffer/gbuffer_pass.h"
+#include "passes/hard_mask/hard_mask_pass.h"
+#include "passes/lighting/lighting_pass.h"
+#include "passes/shadow_map/shadow_map_pass.h"
+
+namespace penumbra {
+
+void register_shared_passes(exec::PassLibrary& library) {
+  library.add(passes::gbuffer_pass_type());
+  library.add(passes::shadow_map_pass_type());
+  library.add(passes::hard_mask_pass_type());
+  library.add(passes::lighting_pass_type());
+}
+
+}  // namespace penumbra

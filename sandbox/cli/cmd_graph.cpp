@@ -1,0 +1,150 @@
+// `penumbra graph`: compile a graph file and print its plan (see cmd_graph.h).
+#include "cmd_graph.h"
+
+#include <charconv>
+#include <exception>
+#include <fstream>
+#include <iostream>
+
+#include "graph/compiler.h"
+#include "graph/graph_json.h"
+#include "cli/command.h"
+#include "pass_registry.h"
+#include "plugin/frame_graph.h"
+
+namespace penumbra::cli {
+
+namespace {
+
+const char* kHelp =
+    "usage: penumbra graph FILE.json [--plan] [--dot OUT.dot] [--screen WxH] [--shadow N]\n"
+    "                      [--set k=v]... [--no-reuse] [--extended-lifetimes] [--frame]\n"
+    "Compiles a render-graph file (docs/graph-format.md) and reports errors or the plan.\n"
+    "  --plan                print the compiled plan (order, culled, textures, lifetimes,\n"
+    "                        barriers, memory)\n"
+    "  --dot OUT.dot         write the plan as Graphviz\n"
+    "  --screen WxH          screen size in pixels (default 1920x1080)\n"
+    "  --shadow N            shadow map size in texels (default 2048)\n"
+    "  --set k=v             set a graph parameter (repeatable)\n"
+    "  --no-reuse            debug: one texture per resource\n"
+    "  --extended-lifetimes  debug: every transient lives the whole frame\n"
+    "  --frame               compose a technique graph into the frame it runs in (G-buffer\n"
+    "                        prologue, lighting epilogue; docs/writing-a-technique.md)\n"
+    "Exit codes: 0 ok, 2 invalid input, 1 internal error.\n";
+
+int usage_error(const std::string& message) {
+  std::cerr << "penumbra graph: " << message << " (see --help)\n";
+  return 2;
+}
+
+bool parse_positive(std::string_view text, int& out, int max) {
+  auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return ec == std::errc{} && p == text.data() + text.size() && out >= 1 && out <= max;
+}
+
+int run(const std::vector<std::string>& args) {
+  std::string file, dot_path;
+  bool print_plan = false, frame = false;
+  graph::CompileSettings settings;
+  graph::CompileOptions options;
+  std::vector<std::string> sets;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= args.size()) return false;
+      out = args[++i];
+      return true;
+    };
+    std::string v;
+    if (a == "--help" || a == "-h") {
+      std::cout << kHelp;
+      return 0;
+    } else if (a == "--plan") {
+      print_plan = true;
+    } else if (a == "--frame") {
+      frame = true;
+    } else if (a == "--no-reuse") {
+      options.no_reuse = true;
+    } else if (a == "--extended-lifetimes") {
+      options.extended_lifetimes = true;
+    } else if (a == "--dot") {
+      if (!value(dot_path)) return usage_error("--dot needs OUT.dot");
+    } else if (a == "--set") {
+      if (!value(v)) return usage_error("--set needs k=v");
+      sets.push_back(v);
+    } else if (a == "--shadow") {
+      if (!value(v) || !parse_positive(v, settings.shadow_size, 16384))
+        return usage_error("--shadow expects an integer in 1..16384 (texels)");
+    } else if (a == "--screen") {
+      size_t x = value(v) ? v.find('x') : std::string::npos;
+      if (x == std::string::npos ||
+          !parse_positive(std::string_view(v).substr(0, x), settings.screen_w, 16384) ||
+          !parse_positive(std::string_view(v).substr(x + 1), settings.screen_h, 16384))
+        return usage_error("--screen expects WxH, e.g. 1280x720");
+    } else if (!a.empty() && a[0] == '-') {
+      return usage_error("unknown option '" + a + "'");
+    } else if (file.empty()) {
+      file = a;
+    } else {
+      return usage_error("one graph file expected, got also '" + a + "'");
+    }
+  }
+  if (file.empty()) return usage_error("missing FILE.json");
+
+  graph::Checked<graph::GraphDesc> desc = graph::load_graph_json(file);
+  if (!desc) {
+    for (const auto& e : desc.errors()) std::cerr << e.to_string() << "\n";
+    return 2;
+  }
+  if (frame) {
+    auto composed = plugin::compose_frame_graph(*desc);
+    if (!composed) {
+      std::cerr << composed.error().to_string() << "\n";
+      return 2;
+    }
+    *desc = std::move(*composed);
+  }
+  graph::ParameterSet params(desc->parameters);
+  for (const auto& s : sets) {
+    if (Status st = params.set_from_string(s); !st) {
+      std::cerr << file << ": --set " << s << ": " << st.error().message << "\n";
+      return 2;
+    }
+  }
+  auto plan = graph::compile(*desc, cli_pass_registry(), params, settings, options);
+  if (!plan) {
+    for (const auto& e : plan.errors()) std::cerr << e.to_string() << "\n";
+    return 2;
+  }
+  if (!dot_path.empty()) {
+    std::ofstream out(dot_path, std::ios::binary);
+    out << graph::to_dot(*plan);
+    if (!out) {
+      std::cerr << dot_path << ": cannot write\n";
+      return 2;
+    }
+  }
+  if (print_plan) std::cout << graph::to_text(*plan);
+  else
+    std::cout << file << ": ok, " << plan->passes.size() << " passes, " << plan->culled.size()
+              << " culled, " << plan->physical.size() << " physical resources, "
+              << plan->memory.assigned_bytes << " of " << plan->memory.naive_bytes << " B\n";
+  return 0;
+}
+
+}  // namespace
+
+namespace {
+const CommandRegistration reg{"graph", "compile a render-graph JSON file, print the plan or dot", cmd_graph};
+}  // namespace
+
+int cmd_graph(const std::vector<std::string>& args) {
+  try {
+    return run(args);
+  } catch (const std::exception& e) {
+    std::cerr << "penumbra graph: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace penumbra::cli

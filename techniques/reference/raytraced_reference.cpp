@@ -1,0 +1,98 @@
+#include "raytraced_reference.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+namespace penumbra::reference {
+namespace {
+
+// Runs row_job(y) for every row on `threads` threads (the caller is one of them), reporting
+// progress from the calling thread only so callbacks never run concurrently.
+template <class RowJob>
+void for_each_row(int height, int threads, const std::function<void(float)>& progress, RowJob row_job) {
+  std::atomic<int> next{0}, done{0};
+  auto worker = [&](bool report) {
+    for (int y = next.fetch_add(1); y < height; y = next.fetch_add(1)) {
+      row_job(y);
+      const int d = done.fetch_add(1) + 1;
+      if (report && progress) progress(static_cast<float>(d) / static_cast<float>(height));
+    }
+  };
+  const int n = std::max(1, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < n; ++i) pool.emplace_back(worker, false);
+  worker(true);
+  for (std::thread& t : pool) t.join();
+  if (progress) progress(1.0f);
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+GBuffer primary_gbuffer(const RayScene& scene, const scene::Camera& camera, int width, int height) {
+  GBuffer g;
+  g.width = width;
+  g.height = height;
+  const size_t n = static_cast<size_t>(std::max(0, width)) * static_cast<size_t>(std::max(0, height));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  g.positions.assign(n, glm::vec3(nan));
+  g.normals.assign(n, glm::vec3(0.0f));
+  g.coverage.assign(n, 0);
+  if (n == 0) return g;
+  // Camera basis from the view matrix (rows of its rotation part are right, up, -forward).
+  const glm::mat4 view = camera.view();
+  const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
+  const glm::vec3 forward = camera.forward();
+  const float tan_half = std::tan(0.5f * camera.fov_y), aspect = static_cast<float>(width) / height;
+  for_each_row(height, 0, nullptr, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const float sx = (2.0f * (x + 0.5f) / width - 1.0f) * tan_half * aspect;
+      const float sy = (1.0f - 2.0f * (y + 0.5f) / height) * tan_half;  // row 0 = top of the screen
+      const glm::vec3 dir = glm::normalize(forward + sx * right + sy * up);
+      RayHit hit;
+      if (!scene.intersect(camera.position, dir, hit, 0.0f, camera.far_plane / std::max(1e-6f, glm::dot(dir, forward))))
+        continue;
+      const size_t i = static_cast<size_t>(y) * width + x;
+      g.positions[i] = camera.position + hit.t * dir;
+      g.normals[i] = glm::dot(hit.geometric_normal, dir) > 0.0f ? -hit.geometric_normal : hit.geometric_normal;
+      g.coverage[i] = 1;
+    }
+  });
+  return g;
+}
+
+metrics::MaskImage trace_visibility(const RayScene& scene, const scene::Light& light,
+                                    std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                    int width, int height, const TraceOptions& options,
+                                    const metrics::CoverageMask& coverage) {
+  metrics::MaskImage out(std::max(0, width), std::max(0, height), 1.0f);
+  const size_t n = out.pixels.size();
+  if (n == 0 || positions.size() < n || normals.size() < n) return out;
+  // The one definition of the light shared with the GPU reference; for directional lights the
+  // points lie on the emitter plane at light.position: a planar area light at finite distance,
+  // which is what PCSS with an orthographic shadow map assumes.
+  const std::vector<glm::vec3> samples = scene::light_sample_points(light, std::max(1, options.samples), options.seed);
+  const float diagonal = scene.bounds().empty() ? 1.0f : glm::length(scene.bounds().extent());
+  const float offset = options.normal_offset > 0.0f ? options.normal_offset : 1e-4f * diagonal;
+  const float inv_m = 1.0f / static_cast<float>(samples.size());
+  for_each_row(out.height, options.threads, options.progress, [&](int y) {
+    for (int x = 0; x < out.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * out.width + x;
+      if ((!coverage.empty() && (i >= coverage.size() || !coverage[i])) || !finite(positions[i])) continue;
+      const glm::vec3 nrm = finite(normals[i]) ? normals[i] : glm::vec3(0.0f);
+      const glm::vec3 origin = positions[i] + offset * nrm;
+      int unoccluded = 0;
+      // dir = sample - origin (not normalised), so t in (0, 1) spans exactly receiver -> emitter.
+      for (const glm::vec3& s : samples)
+        if (!scene.occluded(origin, s - origin, 0.0f, 1.0f)) ++unoccluded;
+      out.pixels[i] = static_cast<float>(unoccluded) * inv_m;
+    }
+  });
+  return out;
+}
+
+}  // namespace penumbra::reference
