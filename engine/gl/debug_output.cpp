@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdarg>
+#include <cstdio>
 #include <cstdlib>
 
 namespace penumbra::gl {
@@ -51,7 +52,8 @@ const char* error_name(GLenum e) {
 void post_call_check(void* ret, const char* name, GLADapiproc proc, int len_args, ...) {
   GLenum err = glad_glGetError();
   if (err == GL_NO_ERROR) return;
-  spdlog::critical("{} in {} (PENUMBRA_GL_STRICT); call stack:", error_name(err), name);
+  // Straight to stderr: the process is about to abort, whatever the log sinks are.
+  std::fprintf(stderr, "penumbra: %s in %s (PENUMBRA_GL_STRICT); call stack:\n", error_name(err), name);
   void* frames[32];
   int n = backtrace(frames, 32);
   backtrace_symbols_fd(frames + 1, n - 1, STDERR_FILENO);
