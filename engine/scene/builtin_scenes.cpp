@@ -193,7 +193,7 @@ const std::vector<BuiltinScene>& registry() {
          add_fence(b, p, glm::translate(glm::mat4(1.0f), {-6.0f, 0.0f, 2.0f}));
          add_ball(b, p, glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, 2.5f}));
          add_poles(b, p, glm::translate(glm::mat4(1.0f), {6.0f, 0.0f, 1.5f}));
-         b.scene.camera = Camera::look_at({0.0f, 9.0f, 13.0f}, {0.0f, 0.0f, -2.0f}, glm::radians(55.0f));
+         b.scene.camera = Camera::look_at({0.0f, 5.5f, 7.5f}, {0.0f, 0.0f, -2.5f}, glm::radians(55.0f));
          b.scene.light = sky_light(p, {0, 0, -2.0f});
        }},
   };

@@ -3,15 +3,13 @@
 #include "passes/gbuffer/gbuffer_pass.h"
 
 #include "exec/gpu_scene.h"
+#include "exec/pass_decl_builder.h"
 #include "gl/framebuffer.h"
 
 namespace penumbra::passes {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 class GBufferPass final : public exec::PassImpl {
  public:
@@ -56,19 +54,16 @@ class GBufferPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType gbuffer_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "gbuffer";
-  d.description = "Depth/normal/position/albedo pre-pass from the camera (raster)";
-  d.slots = {
-      {"scene", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"camera", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"depth", Access::write, SlotKind::texture, {Format::DEPTH32F}, Usage::depth_attachment, true},
-      {"normal", Access::write, SlotKind::texture, {Format::RGBA16F, Format::RGBA32F}, Usage::color_attachment, true},
-      {"position", Access::write, SlotKind::texture, {Format::RGBA32F}, Usage::color_attachment, true},
-      {"albedo", Access::write, SlotKind::texture, {Format::RGBA8, Format::RGBA16F}, Usage::color_attachment, true},
-  };
-  d.same_size_groups = {{"depth", "normal", "position", "albedo"}};
-  return {d, [] { return std::make_unique<GBufferPass>(); }};
+  return exec::PassDeclBuilder("gbuffer")
+      .describe("Depth/normal/position/albedo pre-pass from the camera (raster)")
+      .imported("scene")
+      .imported("camera")
+      .depth_out("depth")
+      .color_out("normal", {Format::RGBA16F, Format::RGBA32F})
+      .color_out("position", {Format::RGBA32F})
+      .color_out("albedo", {Format::RGBA8, Format::RGBA16F})
+      .same_size({"depth", "normal", "position", "albedo"})
+      .build<GBufferPass>();
 }
 
 }  // namespace penumbra::passes

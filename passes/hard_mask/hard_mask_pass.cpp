@@ -1,17 +1,13 @@
 // Binary shadow mask from one shadow-map comparison per pixel (compute).
 #include "passes/hard_mask/hard_mask_pass.h"
 
+#include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::ParamDesc;
-using graph::ParamType;
-using graph::SlotKind;
-using graph::Usage;
 
 class HardMaskPass final : public exec::PassImpl {
  public:
@@ -32,21 +28,16 @@ class HardMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType hard_mask_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "hard_mask";
-  d.description = "Binary shadow mask: one nearest shadow-map comparison per pixel (compute)";
-  d.slots = {
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, false},
-      {"mask", Access::write, SlotKind::texture, {Format::R16F}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"position", "mask"}};
-  ParamDesc bias{.name = "depth_bias", .type = ParamType::real, .default_value = 0.0005, .min = 0.0, .max = 0.05};
-  bias.unit = "window depth";
-  bias.description = "Subtracted from the receiver depth before the comparison";
-  d.params = {bias};
-  return {d, [] { return std::make_unique<HardMaskPass>(); }};
+  return exec::PassDeclBuilder("hard_mask")
+      .describe("Binary shadow mask: one nearest shadow-map comparison per pixel (compute)")
+      .sampled("position", {Format::RGBA32F})
+      .sampled("shadow_map", {Format::DEPTH32F})
+      .imported("light", false)
+      .image_out("mask", {Format::R16F})
+      .same_size({"position", "mask"})
+      .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
+            "Subtracted from the receiver depth before the comparison")
+      .build<HardMaskPass>();
 }
 
 }  // namespace penumbra::passes

@@ -4,15 +4,12 @@
 
 #include <cmath>
 
+#include "exec/pass_decl_builder.h"
+
 namespace penumbra::passes {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::ParamDesc;
-using graph::ParamType;
-using graph::SlotKind;
-using graph::Usage;
 
 class LightingPass final : public exec::PassImpl {
  public:
@@ -41,23 +38,18 @@ class LightingPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType lighting_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "lighting";
-  d.description = "Lambert + ambient, shadowed by shadow_mask, tone mapped to RGBA8 (compute)";
-  d.slots = {
-      {"albedo", Access::read, SlotKind::texture, {}, Usage::sampled, true},
-      {"normal", Access::read, SlotKind::texture, {}, Usage::sampled, true},
-      {"position", Access::read, SlotKind::texture, {}, Usage::sampled, true},
-      {"shadow_mask", Access::read, SlotKind::texture, {Format::R8, Format::R16F, Format::R32F}, Usage::sampled, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"color", Access::write, SlotKind::texture, {Format::RGBA8}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"albedo", "normal", "position", "shadow_mask", "color"}};
-  ParamDesc ambient{.name = "ambient", .type = ParamType::real, .default_value = 0.25, .min = 0.0, .max = 2.0};
-  ambient.description = "Ambient term added to the shadowed direct light (unitless)";
-  d.params = {ambient};
-  d.side_effect = true;
-  return {d, [] { return std::make_unique<LightingPass>(); }};
+  return exec::PassDeclBuilder("lighting")
+      .describe("Lambert + ambient, shadowed by shadow_mask, tone mapped to RGBA8 (compute)")
+      .sampled("albedo")
+      .sampled("normal")
+      .sampled("position")
+      .sampled("shadow_mask", {Format::R8, Format::R16F, Format::R32F})
+      .imported("light")
+      .image_out("color", {Format::RGBA8})
+      .same_size({"albedo", "normal", "position", "shadow_mask", "color"})
+      .real("ambient", 0.25, 0.0, 2.0, "", "Ambient term added to the shadowed direct light")
+      .side_effect()
+      .build<LightingPass>();
 }
 
 }  // namespace penumbra::passes

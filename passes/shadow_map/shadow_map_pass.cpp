@@ -10,17 +10,11 @@
 #include "passes/shadow_map/shadow_map_pass.h"
 
 #include "exec/gpu_scene.h"
+#include "exec/pass_decl_builder.h"
 #include "gl/framebuffer.h"
 
 namespace penumbra::passes {
 namespace {
-
-using graph::Access;
-using graph::Format;
-using graph::ParamDesc;
-using graph::ParamType;
-using graph::SlotKind;
-using graph::Usage;
 
 class ShadowMapPass final : public exec::PassImpl {
  public:
@@ -57,21 +51,15 @@ class ShadowMapPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType shadow_map_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "shadow_map";
-  d.description = "Light-view depth map with slope-scaled constant bias (raster)";
-  d.slots = {
-      {"scene", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"depth", Access::write, SlotKind::texture, {Format::DEPTH32F}, Usage::depth_attachment, true},
-  };
-  ParamDesc slope{.name = "slope_bias", .type = ParamType::real, .default_value = 1.5, .min = 0.0, .max = 10.0};
-  slope.description = "glPolygonOffset factor: depth bias per unit of depth slope";
-  ParamDesc constant{.name = "constant_bias", .type = ParamType::real, .default_value = 2.0, .min = 0.0, .max = 1000.0};
-  constant.unit = "depth steps";
-  constant.description = "glPolygonOffset units: constant bias in smallest depth steps";
-  d.params = {slope, constant};
-  return {d, [] { return std::make_unique<ShadowMapPass>(); }};
+  return exec::PassDeclBuilder("shadow_map")
+      .describe("Light-view depth map with slope-scaled constant bias (raster)")
+      .imported("scene")
+      .imported("light")
+      .depth_out("depth")
+      .real("slope_bias", 1.5, 0.0, 10.0, "", "glPolygonOffset factor: depth bias per unit of depth slope")
+      .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps",
+            "glPolygonOffset units: constant bias in smallest depth steps")
+      .build<ShadowMapPass>();
 }
 
 }  // namespace penumbra::passes
