@@ -2,12 +2,16 @@
 
 #include "passes/shared_passes.h"
 #include "techniques/baseline/baseline_techniques.h"
+#include "techniques/pmchss/pmchss_technique.h"
+#include "techniques/reference/reference_technique.h"
 
 namespace penumbra {
 
 void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   // Each technique folder adds one line here.
   baseline::register_techniques(registry);
+  pmchss::register_technique(registry);
+  reference::register_techniques(registry);
 }
 
 exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry) {

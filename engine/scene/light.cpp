@@ -120,3 +120,30 @@ std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32
 }
 
 }  // namespace penumbra::scene
+
+namespace penumbra::scene {
+
+float emitter_distance(const Light& light, const Bounds& bounds) {
+  if (light.type != LightType::directional) return 0.0f;
+  const float d = bounds.empty() ? 0.0f : glm::dot(bounds.center() - light.position, glm::normalize(light.direction));
+  return std::max(d, std::max(light.radius(), 1e-3f));
+}
+
+std::vector<LightSample> light_samples(const Light& light, const Bounds& bounds, int count, uint32_t seed) {
+  std::vector<LightSample> out;
+  const glm::vec3 dir = glm::normalize(light.direction);
+  const float distance = emitter_distance(light, bounds);
+  const glm::vec3 target = light.position + distance * dir;
+  for (const glm::vec3& p : light_sample_points(light, count, seed)) {
+    LightSample s;
+    s.point = p;
+    if (light.type == LightType::directional) {
+      s.direction = glm::normalize(target - p);
+      s.is_point = false;
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace penumbra::scene

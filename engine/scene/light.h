@@ -4,11 +4,14 @@
 //
 // THE definition of size: `Light::size` is the DIAMETER (world units) of a flat emitter disk
 // centred at `position`, lying in the plane perpendicular to `direction`. Same for both types:
-//  - directional: the disk sits at `position`, at a finite distance from the scene along
-//    -direction. Rays from a receiver go to points on that disk: a "planar area light at finite
-//    distance", which is exactly what PCSS with an orthographic shadow map assumes (the blocker
-//    and receiver depths are measured from the emitter plane; Fernando 2005, eq. 1:
-//    w_penumbra = (d_receiver - d_blocker) * size / d_blocker).
+//  - directional: the disk sits at `position`, at distance D = emitter_distance(light, bounds)
+//    from the scene centre along -direction, and is seen from the scene as a sun: each point s
+//    of the disk is a PARALLEL light of direction normalize(target - s), target = position +
+//    D * direction. The angular diameter is size / D. As size -> 0 this is exactly the hard
+//    shadow of the orthographic shadow map (a disk of finite-distance points would instead
+//    converge like a point light and cast longer shadows than any orthographic map).
+//    Penumbra width, world units, for a blocker h above the receiver along the light:
+//    w = h * size / D (similar triangles, the angular form of Fernando 2005, eq. 1).
 //  - spot: the disk sits at `position` and faces `direction`; the cone half-angle is spot_angle.
 //
 //   Light l = directional_light_for(bounds, glm::normalize(glm::vec3(-1, -2, -1)), 0.05f);
@@ -70,5 +73,20 @@ void emitter_basis(const glm::vec3& direction, glm::vec3& tangent, glm::vec3& bi
 // mapped to the disk with Shirley & Chiu's concentric mapping (area-preserving, so strata stay
 // equal-area on the disk). The ONE sampling of the light used by both references.
 std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32_t seed);
+
+// Directional lights: distance (world units, along `direction`) from the emitter plane to the
+// centre of `bounds`, never below the emitter radius. Spot lights: 0 (not used).
+float emitter_distance(const Light& light, const Bounds& bounds);
+
+// What a reference traces towards for each light sample (the same M stratified points as
+// light_sample_points): spot lights, the point itself (finite ray, `is_point` true);
+// directional lights, the unit direction from the light INTO the scene of that sample's
+// parallel light (rays from a receiver go along -direction, to infinity).
+struct LightSample {
+  glm::vec3 point{0.0f};      // spot: emitter point
+  glm::vec3 direction{0.0f};  // directional: unit, light -> scene
+  bool is_point = true;
+};
+std::vector<LightSample> light_samples(const Light& light, const Bounds& bounds, int count, uint32_t seed);
 
 }  // namespace penumbra::scene

@@ -10,6 +10,9 @@ uniform float u_light_frustum_width; // ortho: frustum width in world units; spo
                                      // frustum at distance 1 (2 tan(fov/2))
 uniform vec3 u_light_dir;         // unit, light -> scene
 uniform vec3 u_light_pos;         // emitter centre
+uniform float u_light_emitter_distance; // directional: emitter plane to scene centre, world
+                                        // units (scene::emitter_distance); angular diameter
+                                        // of the sun-like emitter = size / this
 
 // (shadow-map uv in [0,1], window depth in [0,1]) of a world position.
 vec3 shadow_coord(vec3 world) {
@@ -33,3 +36,20 @@ float light_size_uv_at(float d) {
   if (u_light_ortho == 1) return u_light_size_world / u_light_frustum_width;
   return u_light_size_world / (max(d, 1e-4) * u_light_frustum_width);
 }
+
+// Penumbra width in shadow-map UV at the receiver, for a receiver at light distance d_r and an
+// average blocker at d_b (world units, light_distance()). Fernando 2005, eq. 1 by similar
+// triangles, with the light model of scene/light.h:
+//  - directional (a sun of angular diameter size / D, every emitter point a parallel light):
+//    w_world = (d_r - d_b) * size / D; the orthographic map's UV is world / frustum width.
+//  - spot (emitter disk at the light position): w_world = size * (d_r - d_b) / d_b at the
+//    receiver, where one UV unit spans d_r * (frustum width at distance 1).
+float penumbra_width_uv(float d_r, float d_b) {
+  float h = max(d_r - d_b, 0.0);
+  if (u_light_ortho == 1) return h * u_light_size_world / (max(u_light_emitter_distance, 1e-4) * u_light_frustum_width);
+  return u_light_size_world * h / max(d_b, 1e-4) / (max(d_r, 1e-4) * u_light_frustum_width);
+}
+
+// Width (shadow-map UV) of the region that can hold this receiver's blockers: the penumbra of
+// a blocker at the map's near plane, the farthest a blocker can be from the receiver.
+float blocker_search_width_uv(float d_r) { return penumbra_width_uv(d_r, u_light_near); }

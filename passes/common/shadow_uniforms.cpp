@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "exec/gpu_scene.h"
+
 namespace penumbra::passes {
 
 void set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
@@ -16,6 +18,8 @@ void set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
   p.set("u_light_frustum_width", width);
   p.set("u_light_dir", frame.light.direction);
   p.set("u_light_pos", frame.light.position);
+  p.set("u_light_emitter_distance",
+        frame.scene ? scene::emitter_distance(frame.light, frame.scene->cpu().bounds) : 1.0f);
 }
 
 }  // namespace penumbra::passes

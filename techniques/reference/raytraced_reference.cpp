@@ -72,10 +72,11 @@ metrics::MaskImage trace_visibility(const RayScene& scene, const scene::Light& l
   metrics::MaskImage out(std::max(0, width), std::max(0, height), 1.0f);
   const size_t n = out.pixels.size();
   if (n == 0 || positions.size() < n || normals.size() < n) return out;
-  // The one definition of the light shared with the GPU reference; for directional lights the
-  // points lie on the emitter plane at light.position: a planar area light at finite distance,
-  // which is what PCSS with an orthographic shadow map assumes.
-  const std::vector<glm::vec3> samples = scene::light_sample_points(light, std::max(1, options.samples), options.seed);
+  // The one definition of the light shared with the GPU reference (scene/light.h): spot
+  // samples are points, directional samples are parallel lights (the sun model).
+  const std::vector<scene::LightSample> samples =
+      scene::light_samples(light, scene.bounds(), std::max(1, options.samples), options.seed);
+  const float far = 1e30f;
   const float diagonal = scene.bounds().empty() ? 1.0f : glm::length(scene.bounds().extent());
   const float offset = options.normal_offset > 0.0f ? options.normal_offset : 1e-4f * diagonal;
   const float inv_m = 1.0f / static_cast<float>(samples.size());
@@ -84,11 +85,18 @@ metrics::MaskImage trace_visibility(const RayScene& scene, const scene::Light& l
       const size_t i = static_cast<size_t>(y) * out.width + x;
       if ((!coverage.empty() && (i >= coverage.size() || !coverage[i])) || !finite(positions[i])) continue;
       const glm::vec3 nrm = finite(normals[i]) ? normals[i] : glm::vec3(0.0f);
+      const bool has_normal = glm::dot(nrm, nrm) > 0.25f;
       const glm::vec3 origin = positions[i] + offset * nrm;
       int unoccluded = 0;
-      // dir = sample - origin (not normalised), so t in (0, 1) spans exactly receiver -> emitter.
-      for (const glm::vec3& s : samples)
-        if (!scene.occluded(origin, s - origin, 0.0f, 1.0f)) ++unoccluded;
+      // Points: d = sample - origin (not normalised), so t in (0, 1) spans exactly receiver ->
+      // emitter. Parallel lights: d = -direction, t up to infinity.
+      for (const scene::LightSample& s : samples) {
+        const glm::vec3 d = s.is_point ? s.point - origin : -s.direction;
+        // Smooth-surface terminator: a sample behind the receiver's (interpolated) tangent
+        // plane is hidden by the receiver's own surface (see TraceOptions::normal_offset).
+        if (has_normal && glm::dot(nrm, d) <= 0.0f) continue;
+        if (!scene.occluded(origin, d, 0.0f, s.is_point ? 1.0f : far)) ++unoccluded;
+      }
       out.pixels[i] = static_cast<float>(unoccluded) * inv_m;
     }
   });

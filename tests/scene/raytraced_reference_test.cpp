@@ -75,10 +75,10 @@ static float ball_penumbra_width(float ball_height) {
   EXPECT_TRUE(s);
   const scene::Light& l = s->light;
   const glm::vec3 centre(0.0f, ball_height + 0.5f, 0.0f);
-  // The emitter sits at a finite distance: the shadow is the ball projected from the light's
-  // centre onto y = 0, and the probe runs sideways from there.
-  const glm::vec3 ray = centre - l.position;
-  const glm::vec3 shadow_centre = l.position + ray * (l.position.y / (l.position.y - centre.y));
+  // A directional light is a sun (scene/light.h): the shadow's centre line is the ball
+  // projected along the light direction onto y = 0, and the probe runs sideways from there.
+  const glm::vec3 ray = glm::normalize(l.direction);
+  const glm::vec3 shadow_centre = centre + ray * (-centre.y / ray.y);
   const glm::vec3 lateral = glm::normalize(glm::cross(ray, glm::vec3(0, 1, 0)));
   constexpr int n = 96;
   constexpr float probe_length = 1.2f, step = probe_length / (n - 1);  // metres

@@ -1,0 +1,45 @@
+// Min-filter variant, step 1 (Sterna 2018, section 2.3): min-downsample of the shadow map.
+#include "gl/texture.h"
+#include "techniques/pmchss/passes/pmchss_pass_common.h"
+#include "techniques/pmchss/passes/pmchss_pass_types.h"
+
+namespace penumbra::pmchss {
+namespace {
+
+using graph::Access;
+using graph::Format;
+using graph::SlotKind;
+using graph::Usage;
+
+class MinDownsamplePass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    gl::Texture& shadow = ctx.texture("shadow_map");
+    gl::Texture& out = ctx.texture("min_depth");
+    // The min map stands in for the blocker search, so the same smallest-size rule applies.
+    if (Status s = check_search_covers_texel(ctx, shadow.width()); !s) return s;
+    gl::ShaderProgram& p = ctx.program({.compute = "techniques/pmchss/shaders/min_downsample.comp.glsl"});
+    if (!p.valid()) return *p.last_error();
+    ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
+    ctx.bind_image(0, "min_depth", GL_WRITE_ONLY);
+    ctx.dispatch_over(p, out.width(), out.height());
+    return {};
+  }
+};
+
+}  // namespace
+
+exec::PassType min_downsample_pass_type() {
+  graph::PassTypeDecl d;
+  d.name = "pmchss_min_downsample";
+  d.description = "Min of each block of the shadow map, window depth (Sterna 2018, 2.3)";
+  d.slots = {
+      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
+      {"min_depth", Access::write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
+  };
+  d.params = {real_param("shadow_filter_max_size", 0.002, 1e-4, 0.05, "shadow-map UV", "Largest PCF kernel radius"),
+              real_param("penumbra_kernel_scale", 1.2, 1.0, 2.0, "", "Search radius / filter radius")};
+  return {d, [] { return std::make_unique<MinDownsamplePass>(); }};
+}
+
+}  // namespace penumbra::pmchss

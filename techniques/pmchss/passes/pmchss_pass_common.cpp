@@ -1,0 +1,88 @@
+#include "techniques/pmchss/passes/pmchss_pass_common.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "passes/common/shadow_uniforms.h"
+
+namespace penumbra::pmchss {
+
+using graph::ParamDesc;
+using graph::ParamType;
+
+ParamDesc real_param(const char* name, double def, double min, double max, const char* unit,
+                     const char* description) {
+  ParamDesc d{.name = name, .type = ParamType::real, .default_value = def, .min = min, .max = max};
+  d.unit = unit;
+  d.description = description;
+  return d;
+}
+
+ParamDesc int_param(const char* name, int def, int min, int max, const char* unit,
+                    const char* description) {
+  ParamDesc d{.name = name, .type = ParamType::integer, .default_value = def, .min = double(min),
+              .max = double(max)};
+  d.unit = unit;
+  d.description = description;
+  return d;
+}
+
+ParamDesc bool_param(const char* name, bool def, const char* description) {
+  ParamDesc d{.name = name, .type = ParamType::boolean, .default_value = def};
+  d.description = description;
+  return d;
+}
+
+ParamDesc enum_param(const char* name, const char* def, std::vector<std::string> options,
+                     const char* description) {
+  ParamDesc d{.name = name, .type = ParamType::enumeration, .default_value = std::string(def)};
+  d.description = description;
+  d.options = std::move(options);
+  return d;
+}
+
+std::vector<ParamDesc> penumbra_params() {
+  // Defaults from Sterna 2018 and its demo: 0.002 UV max kernel radius, 1.2 search scale
+  // (section 2.2), k = 80 (Listing 4).
+  return {real_param("shadow_filter_max_size", 0.002, 1e-4, 0.05, "shadow-map UV",
+                     "Largest PCF kernel radius"),
+          real_param("penumbra_kernel_scale", 1.2, 1.0, 2.0, "", "Blocker search radius / filter radius"),
+          enum_param("penumbra_mapping", "paper", {"paper", "physical", "fixed"},
+                     "Blocker depth to penumbra"),
+          real_param("k", 80.0, 0.1, 10000.0, "", "Listing 4 scale of p^2"),
+          real_param("depth_bias", 0.0005, 0.0, 0.05, "window depth", "Comparison bias"),
+          bool_param("receiver_plane_bias", true, "Tilt comparisons along the receiver plane")};
+}
+
+void set_pmchss_uniforms(const gl::Program& p, exec::PassContext& ctx) {
+  passes::set_shadow_uniforms(p, ctx.frame());
+  float max_size = ctx.real("shadow_filter_max_size");
+  p.set("u_shadow_filter_max_size", max_size);
+  p.set("u_search_radius", max_size * ctx.real("penumbra_kernel_scale"));
+  p.set("u_penumbra_k", ctx.real("k"));
+  p.set("u_depth_bias", ctx.real("depth_bias"));
+  p.set("u_receiver_plane", ctx.boolean("receiver_plane_bias") ? 1 : 0);
+  p.set("u_shadow_texel", 1.0f / static_cast<float>(std::max(ctx.frame().shadow_size, 1)));
+}
+
+std::pair<std::string, std::string> mapping_define(exec::PassContext& ctx) {
+  std::string m = ctx.enumeration("penumbra_mapping");
+  return {"PENUMBRA_MAPPING", m == "physical" ? "1" : m == "fixed" ? "2" : "0"};
+}
+
+Status check_search_covers_texel(exec::PassContext& ctx, int shadow_size) {
+  double radius_uv = double(ctx.real("shadow_filter_max_size")) * ctx.real("penumbra_kernel_scale");
+  double texels = radius_uv * shadow_size;
+  if (texels >= 1.0) return {};
+  std::ostringstream m;
+  m << "shadow map " << shadow_size << "x" << shadow_size
+    << " texels is too small for the pmchss blocker search: its radius, penumbra_kernel_scale ("
+    << ctx.real("penumbra_kernel_scale") << ") x shadow_filter_max_size ("
+    << ctx.real("shadow_filter_max_size") << " shadow-map UV), covers " << texels
+    << " texels, at least 1 is needed; use a shadow map of at least "
+    << static_cast<int>(std::ceil(1.0 / radius_uv)) << " texels or raise shadow_filter_max_size";
+  return make_error(m.str(), ErrorKind::bad_input);
+}
+
+}  // namespace penumbra::pmchss

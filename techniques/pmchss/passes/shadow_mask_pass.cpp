@@ -1,0 +1,85 @@
+// Full-resolution shadow mask of pmchss (Sterna 2018, Listing 6) with the penumbra from an
+// in-pass blocker search (regular CHSS, 2.1), the penumbra mask (2.2) or the min map (2.3);
+// optionally only the checkerboard half of the pixels, packed (section 3).
+#include "gl/texture.h"
+#include "techniques/pmchss/passes/pmchss_pass_common.h"
+#include "techniques/pmchss/passes/pmchss_pass_types.h"
+
+namespace penumbra::pmchss {
+namespace {
+
+using graph::Access;
+using graph::Format;
+using graph::SlotKind;
+using graph::Usage;
+
+class ShadowMaskPass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    gl::Texture& shadow = ctx.texture("shadow_map");
+    gl::Texture& mask = ctx.texture("mask");
+    std::string source = ctx.enumeration("source");
+    bool checker = ctx.boolean("checkerboard");
+    bool searches = source == "search" && ctx.enumeration("penumbra_mapping") != "fixed";
+    if (searches)
+      if (Status s = check_search_covers_texel(ctx, shadow.width()); !s) return s;
+    if (checker != (mask.format() == gl::Format::RG16F))
+      return make_error("slot 'mask' must be RG16F screen/2 with checkerboard=true and R16F "
+                        "screen otherwise", ErrorKind::internal);
+    const char* source_define = source == "mask" ? "1" : source == "min_depth" ? "2" : "0";
+    std::vector<std::pair<std::string, std::string>> defines = {
+        {"BLOCKER_SAMPLES", std::to_string(ctx.integer("blocker_samples"))},
+        {"FILTER_SAMPLES", std::to_string(ctx.integer("filter_samples"))},
+        {"PENUMBRA_SOURCE", source_define},
+        mapping_define(ctx)};
+    if (checker) defines.push_back({"CHECKER", "1"});
+    gl::ShaderProgram& p = ctx.program(
+        {.compute = "techniques/pmchss/shaders/shadow_mask.comp.glsl", .defines = defines});
+    if (!p.valid()) return *p.last_error();
+    if (nearest_.id() == 0) {
+      nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
+      linear_ = gl::Sampler(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp);
+      compare_ = gl::Sampler(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp, true);
+    }
+    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_normal", "normal");
+    ctx.bind_sampled(p, "u_shadow_map", "shadow_map", nearest_.id());
+    ctx.bind_sampled(p, "u_shadow_cmp", "shadow_map", compare_.id());
+    if (source == "mask") ctx.bind_sampled(p, "u_penumbra_mask", "penumbra_mask", linear_.id());
+    if (source == "min_depth") ctx.bind_sampled(p, "u_min_depth", "min_depth", linear_.id());
+    ctx.bind_image(0, "mask", GL_WRITE_ONLY);
+    set_pmchss_uniforms(p.program(), ctx);
+    ctx.dispatch_over(p, mask.width(), mask.height());
+    return {};
+  }
+
+ private:
+  gl::Sampler nearest_, linear_, compare_;
+};
+
+}  // namespace
+
+exec::PassType shadow_mask_pass_type() {
+  graph::PassTypeDecl d;
+  d.name = "pmchss_shadow_mask";
+  d.description = "pmchss shadow mask: 16 Vogel taps of hardware PCF scaled by the penumbra "
+                  "(Sterna 2018, Listing 6)";
+  d.slots = {
+      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
+      {"normal", Access::read, SlotKind::texture, {Format::RGBA16F}, Usage::sampled, true},
+      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
+      {"light", Access::read, SlotKind::imported, {}, Usage::imported, false},
+      {"penumbra_mask", Access::read, SlotKind::texture, {Format::R16F}, Usage::sampled, false},
+      {"min_depth", Access::read, SlotKind::texture, {Format::R32F}, Usage::sampled, false},
+      {"mask", Access::write, SlotKind::texture, {Format::R16F, Format::RG16F}, Usage::image_store, true},
+  };
+  d.params = penumbra_params();
+  d.params.push_back(enum_param("source", "search", {"search", "mask", "min_depth"},
+                                "Where the penumbra comes from"));
+  d.params.push_back(int_param("blocker_samples", 16, 4, 64, "", "Blocker search taps (source=search)"));
+  d.params.push_back(int_param("filter_samples", 16, 4, 64, "", "PCF taps"));
+  d.params.push_back(bool_param("checkerboard", false, "Compute (x + y) even pixels only, packed RG16F"));
+  return {d, [] { return std::make_unique<ShadowMaskPass>(); }};
+}
+
+}  // namespace penumbra::pmchss

@@ -1,0 +1,98 @@
+// Shared pieces of the pmchss passes (Sterna 2018, "Contact-hardening Soft Shadows Made Fast").
+// Needs: shadow_common.glsl, noise.glsl, receiver_plane.glsl included first.
+//
+// Depth domains: the shadow map holds the light's WINDOW depth in [0, 1]; comparisons happen
+// there (with bias). The penumbra mapping works on light-VIEW distances in world units
+// (light_distance()), as the paper's demo does ("depths are all in shadow map's view space",
+// section 2.1).
+
+// Set by set_pmchss_uniforms() (pmchss_uniforms.cpp).
+uniform float u_shadow_filter_max_size;  // shadow-map UV, radius of the largest PCF kernel
+uniform float u_search_radius;           // shadow-map UV: kernel scale x shadow_filter_max_size
+uniform float u_penumbra_k;              // Listing 4's 80
+uniform float u_depth_bias;              // window depth units
+uniform int u_receiver_plane;            // 1: tilt comparisons along the receiver plane
+uniform float u_shadow_texel;            // one shadow-map texel in UV (1 / shadow size)
+
+const float kTwoPi = 6.28318530718;
+
+// Rotation phi of the Vogel disk for a full-resolution pixel (section 1.2: phi = 2 pi IGN).
+// Checkerboard mode multiplies y by 4 (section 3, Listing 7): with only every other pixel
+// computed, the unmodified noise "looked less random".
+float pmchss_noise_phi(ivec2 pixel, bool checker) {
+  vec2 centre = vec2(pixel) + 0.5;
+  if (checker) centre.y *= 4.0;
+  return kTwoPi * interleaved_gradient_noise(centre);
+}
+
+// Receiver depth compared against a tap at uv offset `o`: the plane-extrapolated window depth
+// (receiver_plane.glsl) minus the constant bias.
+// With the plane, a tap also carries the plane's depth change across one texel: the map holds
+// one depth per texel, so a slanted receiver differs from its own texel's stored depth by up to
+// |dz/du| + |dz/dv| texels' worth ("fractional texel" error, Isidoro 2006).
+float pmchss_receiver_depth(float z_window, vec2 dz_duv, vec2 o) {
+  float z = z_window - u_depth_bias;
+  if (u_receiver_plane == 1) z += dot(o, dz_duv) - (abs(dz_duv.x) + abs(dz_duv.y)) * u_shadow_texel;
+  return z;
+}
+
+// Average blocker search, section 2.1, Listing 3: N Vogel taps inside the search radius, point
+// sampled; taps closer to the light than the receiver are blockers and their depths averaged.
+// Returns the number of blockers; `avg_window_depth` is their mean window depth.
+float pmchss_blocker_search(sampler2D shadow_map, vec2 uv, float z_window, vec2 dz_duv, int n,
+                            float phi, out float avg_window_depth) {
+  float sum = 0.0;
+  float count = 0.0;
+  for (int i = 0; i < n; ++i) {
+    vec2 o = u_search_radius * vogel_disk_sample(i, n, phi);
+    float d = textureLod(shadow_map, uv + o, 0.0).r;
+    if (d < pmchss_receiver_depth(z_window, dz_duv, o)) {
+      sum += d;
+      count += 1.0;
+    }
+  }
+  avg_window_depth = count > 0.0 ? sum / count : 1.0;
+  return count;
+}
+
+// Penumbra in [0, 1] = fraction of shadow_filter_max_size used as the PCF kernel radius.
+// PENUMBRA_MAPPING (a define, from the penumbra_mapping parameter):
+//   0 paper:    p = (z - z_avg) / z_avg, saturate(k p^2)                (section 2.1, Listing 4)
+//   1 physical: PCSS width (Fernando 2005, the paper's Listing 5) for the light model of
+//               scene/light.h, in shadow-map UV at the receiver (penumbra_width_uv in
+//               shadow_common.glsl); the kernel radius is w / 2 (a disk kernel of radius R
+//               turns a hard edge into a ramp 2R wide).
+//   2 fixed:    1, no contact hardening (Table 1's "Regular Shadow Mask")
+float pmchss_penumbra_from_blocker(float z_window, float blocker_window) {
+#if PENUMBRA_MAPPING == 2
+  return 1.0;
+#else
+  float d_r = light_distance(z_window);
+  float d_b = max(light_distance(blocker_window), 1e-4);
+#if PENUMBRA_MAPPING == 0
+  float p = (d_r - d_b) / d_b;
+  return clamp(u_penumbra_k * p * p, 0.0, 1.0);
+#else
+  float radius_uv = 0.5 * penumbra_width_uv(d_r, d_b);
+  return clamp(radius_uv / u_shadow_filter_max_size, 0.0, 1.0);
+#endif
+#endif
+}
+
+// Soft shadow of Listing 6: FILTER_SAMPLES Vogel taps over penumbra x shadow_filter_max_size,
+// each a hardware 2x2 bilinear comparison (sampler2DShadow, "SampleCmp" in the paper).
+float pmchss_filter(sampler2DShadow shadow_cmp, vec2 uv, float z_window, vec2 dz_duv,
+                    float penumbra, float phi) {
+  float lit = 0.0;
+  float radius = penumbra * u_shadow_filter_max_size;
+  for (int i = 0; i < FILTER_SAMPLES; ++i) {
+    vec2 o = radius * vogel_disk_sample(i, FILTER_SAMPLES, phi);
+    lit += texture(shadow_cmp, vec3(uv + o, pmchss_receiver_depth(z_window, dz_duv, o)));
+  }
+  return lit / float(FILTER_SAMPLES);
+}
+
+// Shadow-map coordinate of a world position, or false outside the light frustum (lit).
+bool pmchss_in_shadow_frustum(vec3 c) {
+  return all(greaterThanEqual(c, vec3(0.0))) && all(lessThanEqual(c, vec3(1.0)));
+}
