@@ -1,7 +1,11 @@
 #pragma once
 // Exact area-light visibility on the CPU: for each receiver pixel, the fraction of M stratified
 // points on the light's emitter disk (scene::light_sample_points, shared with the GPU raster
-// reference) that a shadow ray reaches unoccluded. Output follows the shadow_mask contract:
+// reference) that a shadow ray reaches unoccluded. A point behind the receiver's tangent plane
+// (dot(normal, point - receiver) <= 0) counts as hidden by the receiver's own surface without a
+// ray: with interpolated normals this puts the terminator of a tessellated sphere where the
+// smooth surface has it (instead of a facet-dependent band where grazing rays graze the flat
+// triangles), which is what shadow-map techniques and the raster reference see too. Output follows the shadow_mask contract:
 // 1 = lit, 0 = umbra; background pixels are written as 1 and flagged 0 in the coverage mask.
 //
 //   Result<RayScene> rs = RayScene::build(scene);

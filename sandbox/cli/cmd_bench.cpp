@@ -1,0 +1,165 @@
+// penumbra bench: per-pass median GPU time of techniques on fixed scenes and sizes. On a GPU the
+// executor times passes with timestamp queries read a few frames late (no stall); on llvmpipe
+// with glFinish + a CPU clock (timer queries do not measure software rendering).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "cli/bench_report.h"
+#include "cli/command.h"
+#include "cli/context_option.h"
+#include "cli/eval_capture.h"
+#include "cli/scene_option.h"
+#include "techniques/builtin_techniques.h"
+
+namespace penumbra::cli {
+namespace {
+
+const std::vector<OptionSpec> kSpecs = {
+    {"techniques", true, false, "a,b", "techniques to time (default: every registered one but reference)"},
+    {"scenes", true, false, "s1,s2", "built-in scenes or glTF files (default colonnade)"},
+    {"size", true, false, "WxH", "screen size in pixels (default 1920x1080)"},
+    {"shadow-size", true, false, "N", "shadow-map size in texels (default 2048)"},
+    {"frames", true, false, "N", "measured frames per row (default 200, at most 240)"},
+    {"warmup", true, false, "N", "frames rendered before measuring (default 10)"},
+    {"set", true, true, "k=v", "set a parameter of every technique that has it"},
+    {"json", true, false, "OUT.json", "write the results as JSON"},
+    context_option_spec(),
+};
+
+int fail(const Error& e) {
+  std::fprintf(stderr, "penumbra bench: %s\n", e.to_string().c_str());
+  if (!e.details.empty()) std::fprintf(stderr, "%s", e.details.c_str());
+  return e.exit_code();
+}
+
+struct BenchOptions {
+  std::vector<std::string> techniques, scenes{"colonnade"}, sets;
+  int width = 1920, height = 1080, shadow = 2048, frames = 200, warmup = 10;
+  std::string json;
+};
+
+Result<BenchOptions> parse_bench_options(const ParsedArgs& args, const plugin::TechniqueRegistry& registry) {
+  BenchOptions o;
+  if (!args.positionals.empty()) return make_error("unexpected argument '" + args.positionals[0] + "'");
+  if (auto t = args.get("techniques")) {
+    auto list = split_list("techniques", *t);
+    if (!list) return list.error();
+    o.techniques = *list;
+  } else {
+    // The reference is ground truth, not a real-time technique: its per-frame cost depends on
+    // how far its accumulation has got. Name it explicitly to time it anyway.
+    for (const std::string& n : registry.names())
+      if (n != "reference") o.techniques.push_back(n);
+  }
+  for (const std::string& t : o.techniques)
+    if (!registry.find(t)) {
+      std::string valid;
+      for (const std::string& n : registry.names()) valid += (valid.empty() ? "" : ", ") + n;
+      return make_error("unknown technique '" + t + "' (available: " + valid + ")");
+    }
+  if (auto s = args.get("scenes")) {
+    auto list = split_list("scenes", *s);
+    if (!list) return list.error();
+    o.scenes = *list;
+  }
+  if (auto s = args.get("size")) {
+    auto size = parse_size("size", *s);
+    if (!size) return size.error();
+    std::tie(o.width, o.height) = *size;
+  }
+  struct IntOption { const char* name; int* value; int lo, hi; };
+  for (const IntOption& i : {IntOption{"shadow-size", &o.shadow, 16, 16384}, IntOption{"frames", &o.frames, 1, 240},
+                             IntOption{"warmup", &o.warmup, 0, 100000}})
+    if (auto s = args.get(i.name)) {
+      auto n = parse_int(i.name, *s, i.lo, i.hi);
+      if (!n) return n.error();
+      *i.value = *n;
+    }
+  o.json = args.get("json").value_or("");
+  o.sets = args.all("set");
+  if (Status s = check_set_keys(registry, o.techniques, o.sets); !s) return s.error();
+  return o;
+}
+
+Status write_json(const std::string& path, const BenchReport& report) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    f << bench_report_json(report);
+    if (!f) {
+      std::filesystem::remove(tmp);
+      Error e = make_error("cannot write the JSON report");
+      e.file = path;
+      return e;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp);
+    Error e = make_error("cannot write the JSON report: " + ec.message());
+    e.file = path;
+    return e;
+  }
+  std::printf("wrote %s\n", path.c_str());
+  return {};
+}
+
+int cmd_bench(const std::vector<std::string>& argv) {
+  for (const std::string& a : argv)
+    if (a == "--help" || a == "-h") {
+      std::printf("%s", format_help("penumbra bench [--techniques a,b] [--scenes s1,s2] [--size WxH] [--shadow-size N] "
+                                    "[--frames N] [--warmup N] [--set k=v]... [--json OUT.json]",
+                                    "Renders warmup + N frames of each technique on each scene and prints the\n"
+                                    "median time of every pass and their sum. On a GPU (EGL) passes are timed with\n"
+                                    "timestamp queries; on llvmpipe with glFinish + a CPU clock.",
+                                    kSpecs).c_str());
+      return 0;
+    }
+  auto args = parse_args(argv, kSpecs);
+  if (!args) return fail(args.error());
+  plugin::TechniqueRegistry registry;
+  register_builtin_techniques(registry);
+  auto options = parse_bench_options(*args, registry);
+  if (!options) return fail(options.error());
+  const BenchOptions& o = *options;
+  std::vector<scene::Scene> scenes;
+  for (const std::string& s : o.scenes) {
+    auto scene = load_scene_option(s);
+    if (!scene) return fail(scene.error());
+    scenes.push_back(std::move(*scene));
+  }
+
+  int code = 0;
+  auto ctx = open_context(*args, "bench", &code, 16, 16);
+  if (!ctx) return code;
+  exec::PassLibrary library = make_pass_library(registry);
+  BenchReport report{ctx->info().backend, ctx->info().renderer, "", {}};
+  for (const scene::Scene& scene : scenes) {
+    plugin::TechniqueSession session(registry, library);
+    session.set_scene(scene);
+    if (Status s = session.resize(o.width, o.height); !s) return fail(s.error());
+    if (Status s = session.set_shadow_size(o.shadow); !s) return fail(s.error());
+    for (const std::string& t : o.techniques) {
+      std::fprintf(stderr, "bench %s on %s (%dx%d, shadow %d): %d + %d frames...\n", t.c_str(), scene.name.c_str(),
+                   o.width, o.height, o.shadow, o.warmup, o.frames);
+      if (Status s = session.set_technique(t); !s) return fail(s.error());
+      if (Status s = apply_matching_sets(session, o.sets); !s) return fail(s.error());
+      if (Status s = render_timed_frames(session, o.warmup, o.frames); !s) return fail(s.error());
+      BenchRow row{t, scene.name, o.width, o.height, o.shadow, pass_medians(session, o.frames), 0.0};
+      for (const PassMedian& p : row.passes) row.total_ms += p.ms;
+      report.rows.push_back(std::move(row));
+      report.timing = timing_mode_note(session);
+    }
+  }
+  std::printf("%s", bench_report_table(report).c_str());
+  if (!o.json.empty())
+    if (Status s = write_json(o.json, report); !s) return fail(s.error());
+  return 0;
+}
+
+const CommandRegistration reg{"bench", "per-pass median GPU time of techniques on fixed scenes", cmd_bench};
+
+}  // namespace
+}  // namespace penumbra::cli

@@ -1,0 +1,130 @@
+#include "cli/eval_capture.h"
+
+#include <algorithm>
+
+#include "gl/timer_query.h"
+
+namespace penumbra::cli {
+
+metrics::MaskImage read_mask_image(const gl::Texture& texture) {
+  const std::vector<float> texels = texture.read();
+  const int w = texture.width(), h = texture.height(), c = texture.info().channels;
+  metrics::MaskImage img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      img.at(x, h - 1 - y) = texels[(static_cast<size_t>(y) * w + x) * c];
+  return img;
+}
+
+metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_position) {
+  const std::vector<float> texels = gbuffer_position.read();
+  const int w = gbuffer_position.width(), h = gbuffer_position.height(), c = gbuffer_position.info().channels;
+  metrics::CoverageMask coverage(static_cast<size_t>(w) * h, 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      coverage[static_cast<size_t>(h - 1 - y) * w + x] = texels[(static_cast<size_t>(y) * w + x) * c + (c - 1)] > 0.0f;
+  return coverage;
+}
+
+Status render_timed_frames(plugin::TechniqueSession& session, int warmup, int frames) {
+  for (int i = 0; i < warmup + frames; ++i) {
+    if (Status s = session.render(); !s) return s;
+    // Timestamp results arrive kFramesInFlight frames late: render that many more so the last
+    // `frames` results read are all measured frames.
+    if (i == 0 && session.executor().timing_mode() == exec::TimingMode::gpu_timestamps)
+      frames += gl::GpuSpanTimer::kFramesInFlight;
+  }
+  return {};
+}
+
+std::vector<PassMedian> pass_medians(plugin::TechniqueSession& session, int frames) {
+  std::vector<PassMedian> out;
+  for (const exec::PassTiming& t : session.executor().timings()) {
+    std::vector<float> v(t.history.end() - std::min<std::ptrdiff_t>(frames, t.history.size()), t.history.end());
+    double median = 0.0;
+    if (!v.empty()) {
+      std::sort(v.begin(), v.end());
+      const size_t m = v.size() / 2;
+      median = v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+    }
+    out.push_back({t.name, median});
+  }
+  return out;
+}
+
+std::string timing_mode_note(plugin::TechniqueSession& session) {
+  switch (session.executor().timing_mode()) {
+    case exec::TimingMode::gpu_timestamps: return "GPU timestamp queries";
+    case exec::TimingMode::cpu_finish:
+      return "glFinish + CPU clock (software renderer: GL timer queries do not measure llvmpipe's work)";
+    case exec::TimingMode::off: return "off";
+  }
+  return "unknown";
+}
+
+Status check_set_keys(const plugin::TechniqueRegistry& registry, const std::vector<std::string>& techniques,
+                      const std::vector<std::string>& assignments) {
+  std::vector<graph::ParameterSet> sets;
+  for (const std::string& t : techniques) {
+    const plugin::Technique* technique = registry.find(t);
+    if (!technique) continue;
+    auto g = plugin::load_technique_graph(*technique);
+    if (!g) return g.error();
+    sets.emplace_back(g->parameters);
+  }
+  for (const std::string& kv : assignments) {
+    const size_t eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      Error e = make_error("expected k=v");
+      e.where = "--set " + kv;
+      return e;
+    }
+    const std::string key = kv.substr(0, eq);
+    bool known = false;
+    for (graph::ParameterSet& p : sets) {
+      if (!p.find(key)) continue;
+      known = true;
+      if (Status s = p.set_from_string(kv); !s) {
+        Error e = s.error();
+        e.where = "--set " + kv;
+        return e;
+      }
+    }
+    if (!known) {
+      std::string list;
+      for (const std::string& t : techniques) list += (list.empty() ? "" : ", ") + t;
+      Error e = make_error("no technique among " + list + " has a parameter '" + key + "'");
+      e.where = "--set " + kv;
+      return e;
+    }
+  }
+  return {};
+}
+
+Status apply_matching_sets(plugin::TechniqueSession& session, const std::vector<std::string>& assignments) {
+  for (const std::string& kv : assignments) {
+    if (!session.params().find(kv.substr(0, kv.find('=')))) continue;
+    if (Status s = session.set_param(kv); !s) {
+      Error e = s.error();
+      e.where = "--set " + kv;
+      return e;
+    }
+  }
+  return {};
+}
+
+Result<std::vector<std::string>> split_list(const std::string& option, const std::string& text) {
+  std::vector<std::string> items;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (item.empty()) return make_error("--" + option + " expects a comma-separated list without empty items, got '" + text + "'");
+    items.push_back(item);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return items;
+}
+
+}  // namespace penumbra::cli

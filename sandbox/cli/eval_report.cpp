@@ -1,0 +1,37 @@
+#include "cli/eval_report.h"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+namespace penumbra::cli {
+
+std::string eval_report_json(const EvalReport& report) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const EvalRow& r : report.rows)
+    rows.push_back({{"technique", r.technique},
+                    {"rmse", r.errors.rmse},
+                    {"rmse_penumbra", r.errors.rmse_penumbra},
+                    {"mae", r.errors.mae},
+                    {"max_error", r.errors.max_error},
+                    {"ssim", r.errors.ssim},
+                    {"gpu_ms", r.gpu_ms}});
+  nlohmann::ordered_json j = {{"scene", report.scene}, {"reference", report.reference}, {"rows", rows}};
+  return j.dump(2) + "\n";
+}
+
+std::string eval_report_table(const EvalReport& report) {
+  std::string out;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-14s %9s %13s %9s %9s %7s %10s\n", "technique", "RMSE", "RMSE penumbra",
+                "MAE", "max", "SSIM", "ms");
+  out += line;
+  for (const EvalRow& r : report.rows) {
+    std::snprintf(line, sizeof line, "%-14s %9.5f %13.5f %9.5f %9.4f %7.4f %10.3f\n", r.technique.c_str(),
+                  r.errors.rmse, r.errors.rmse_penumbra, r.errors.mae, r.errors.max_error, r.errors.ssim, r.gpu_ms);
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,58 @@
+#version 450 core
+// Raster reference, one light sample: adds the hard visibility of every receiver pixel as seen
+// from one sample point of the emitter disk (1 = the point sees the receiver) to the running sum.
+// One depth comparison per pixel at the nearest texel of that point's perspective depth map
+// (sample_point_view.h).
+// Same light model as the ray tracer (raytraced_reference.h): a sample point behind the receiver's
+// tangent plane is hidden by the receiver's own surface; otherwise the receiver, lifted by the ray
+// tracer's normal offset, is compared with the map.
+// Bias against acne: the receiver moves TOWARDS the sample point (along the shadow ray, so the
+// shadow's edges do not move, unlike a normal offset, which shifts them by offset / tan(elevation)
+// on a grazing-lit ground) by `u_texel_offset` texel footprints x tan(angle between normal and
+// ray): the depth a receiver-plane slope gains over the distance between the receiver and the
+// nearest texel centre (receiver-plane depth bias, Isidoro 2006, in world units). Flat-facing
+// receivers get almost none, grazing ones up to 10 texels.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(r32f, binding = 0) uniform image2D u_accumulation;  // sum of visibilities so far
+uniform sampler2D u_position;     // gbuffer_position: world xyz, w > 0 on geometry
+uniform sampler2D u_normal;       // gbuffer_normal: world unit normal
+uniform sampler2D u_sample_map;   // DEPTH32F window depth from the sample point
+uniform mat4 u_sample_view_proj;  // world -> the sample map's clip space
+uniform int u_sample_is_point;    // 1: point sample (perspective map), 0: parallel (orthographic)
+uniform vec3 u_sample_point;      // point samples: the map's eye, world units
+uniform vec3 u_sample_dir;        // unit, light -> scene: the map's view axis
+uniform float u_normal_offset;    // world units (the ray tracer's shadow-ray offset)
+uniform float u_texel_offset;     // texel footprints (the `receiver_bias` parameter)
+uniform float u_texel_tan;        // perspective: frustum width at distance 1 / map size
+uniform float u_texel_world;      // orthographic: map width / map size, world units
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(u_accumulation)))) return;
+  vec4 pos = texelFetch(u_position, p, 0);
+  if (pos.w <= 0.0) return;
+  vec3 n = texelFetch(u_normal, p, 0).xyz;
+  vec3 to_light = -u_sample_dir;  // parallel sample: the same direction for every receiver
+  float depth = 0.0;             // along the map's axis from a point sample, world units
+  if (u_sample_is_point == 1) {
+    to_light = normalize(u_sample_point - pos.xyz);
+    depth = max(dot(pos.xyz - u_sample_point, u_sample_dir), 0.0);
+  }
+  float cos_theta = dot(n, to_light);
+  float texel_world = depth * u_texel_tan + u_texel_world;
+  float tan_theta = min(sqrt(max(1.0 - cos_theta * cos_theta, 0.0)) / max(cos_theta, 1e-4), 10.0);
+  vec3 x = pos.xyz + u_normal_offset * n + (u_texel_offset * texel_world * tan_theta) * to_light;
+  vec4 clip = u_sample_view_proj * vec4(x, 1.0);
+  float lit = 1.0;  // outside the map (or behind the eye): nothing of the scene blocks it
+  if (cos_theta <= 0.0) {
+    lit = 0.0;  // behind the receiver's tangent plane: its own surface hides the point
+  } else if (clip.w > 0.0) {
+    vec3 c = clip.xyz / clip.w * 0.5 + 0.5;
+    if (all(greaterThanEqual(c, vec3(0.0))) && all(lessThanEqual(c, vec3(1.0)))) {
+      ivec2 size = textureSize(u_sample_map, 0);
+      ivec2 t = clamp(ivec2(c.xy * vec2(size)), ivec2(0), size - 1);
+      lit = c.z <= texelFetch(u_sample_map, t, 0).r ? 1.0 : 0.0;
+    }
+  }
+  imageStore(u_accumulation, p, imageLoad(u_accumulation, p) + vec4(lit, 0.0, 0.0, 0.0));
+}

@@ -1,0 +1,164 @@
+// The progressive raster reference (compute accumulation of per-sample-point depth maps).
+#include "raster_reference_pass.h"
+
+#include <algorithm>
+
+#include <spdlog/spdlog.h>
+
+#include "exec/gpu_scene.h"
+#include "gl/framebuffer.h"
+#include "reference_frame_key.h"
+#include "reference_params.h"
+#include "reference_progress.h"
+#include "sample_view.h"
+
+namespace penumbra::reference {
+namespace {
+
+using graph::Access;
+using graph::Format;
+using graph::SlotKind;
+using graph::Usage;
+
+// Texture unit given to GpuScene::draw for base-colour textures (alpha-masked casters), above
+// the units the compute programs use.
+constexpr GLuint kSceneTextureUnit = 7;
+
+class RasterReferencePass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    const exec::FrameInputs& frame = ctx.frame();
+    if (!frame.scene) return make_error("reference_raster: no scene", ErrorKind::internal);
+    const int samples = ctx.integer("samples"), map_size = ctx.integer("map_size");
+    const int seed = ctx.integer("seed");
+    const float slope_bias = ctx.real("slope_bias"), constant_bias = ctx.real("constant_bias");
+    const float receiver_bias = ctx.real("receiver_bias");
+    gl::Texture& accumulation = ctx.texture("accumulation");
+
+    // Reset rule: anything the sum depends on changed since last frame -> start again.
+    ReferenceFrameKey key = make_frame_key(frame, {double(samples), double(map_size), double(seed),
+                                                   slope_bias, constant_bias, receiver_bias});
+    if (!has_key_ || key != key_) {
+      if (has_key_) count_reference_reset();
+      key_ = std::move(key);
+      has_key_ = true;
+      done_ = 0;
+      samples_ = scene::light_samples(frame.light, frame.scene->cpu().bounds, samples, static_cast<uint32_t>(seed));
+      accumulation.clear(0.0f);
+    }
+    if (Status s = ensure_map(map_size); !s) return s;
+
+    gl::ShaderProgram& depth = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
+                                            .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
+    if (!depth.valid()) return *depth.last_error();
+    gl::ShaderProgram& acc = ctx.program({.compute = "techniques/reference/raster_accumulate.comp.glsl"});
+    if (!acc.valid()) return *acc.last_error();
+    gl::ShaderProgram& resolve = ctx.program({.compute = "techniques/reference/raster_resolve.comp.glsl"});
+    if (!resolve.valid()) return *resolve.last_error();
+
+    const scene::Bounds& bounds = frame.scene->cpu().bounds;
+    // The ray tracer's shadow-ray offset (raytraced_reference.h): 1e-4 of the bounds' diagonal.
+    const float normal_offset = 1e-4f * (bounds.empty() ? 1.0f : glm::length(bounds.extent()));
+    const int todo = std::min(ctx.integer("maps_per_frame"), samples - done_);
+    if (todo > 0) {
+      ctx.bind_sampled(acc, "u_position", "position");  // units 0, 1
+      ctx.bind_sampled(acc, "u_normal", "normal");
+      constexpr GLuint map_unit = 2;
+      acc.program().set("u_sample_map", static_cast<int>(map_unit));
+      acc.program().set("u_normal_offset", normal_offset);
+      acc.program().set("u_texel_offset", ctx.real("receiver_bias"));
+      ctx.bind_image(0, "accumulation", GL_READ_WRITE);
+      for (int i = 0; i < todo; ++i, ++done_) {
+        const scene::LightSample& sample = samples_[static_cast<size_t>(progressive_index(done_, samples))];
+        const SampleView view = sample_view(frame.light, bounds, sample);
+        render_map(depth.program(), *frame.scene, view.view_proj, slope_bias, constant_bias);
+        glBindTextureUnit(map_unit, map_.id());
+        glBindSampler(map_unit, 0);
+        acc.program().set("u_sample_view_proj", view.view_proj);
+        acc.program().set("u_texel_tan", view.frustum_tan / static_cast<float>(map_size));
+        acc.program().set("u_texel_world", view.width_world / static_cast<float>(map_size));
+        acc.program().set("u_sample_is_point", sample.is_point ? 1 : 0);
+        acc.program().set("u_sample_point", sample.point);
+        acc.program().set("u_sample_dir", glm::normalize(sample.is_point ? frame.light.direction : sample.direction));
+        ctx.dispatch_over(acc, accumulation.width(), accumulation.height());
+        // The next sample reads the sum this one wrote through image stores.
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      }
+    }
+
+    ctx.bind_sampled(resolve, "u_position", "position");
+    ctx.bind_image(0, "accumulation", GL_READ_ONLY);
+    ctx.bind_image(1, "mask", GL_WRITE_ONLY);
+    resolve.program().set("u_count", static_cast<float>(std::max(done_, 1)));
+    gl::Texture& mask = ctx.texture("mask");
+    ctx.dispatch_over(resolve, mask.width(), mask.height());
+
+    publish_reference_progress("raster", done_, samples);
+    return {};
+  }
+
+ private:
+  Status ensure_map(int size) {
+    if (map_ && map_.width() == size) return {};
+    map_ = gl::Texture(gl::Format::DEPTH32F, size, size);
+    map_.set_label("reference_sample_map");
+    fb_ = gl::Framebuffer();
+    fb_.attach_depth(map_);
+    return fb_.finish();
+  }
+
+  // One sample point's depth map: the shared shadow_map program (alpha-tested casters) with a
+  // slope-scaled + constant polygon offset, as passes/shadow_map does.
+  void render_map(const gl::Program& program, const exec::GpuScene& scene, const glm::mat4& view_proj,
+                  float slope_bias, float constant_bias) {
+    fb_.bind();
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(fb_.id(), GL_DEPTH, 0, &one);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(slope_bias, constant_bias);
+    program.set("u_light_view_proj", view_proj);
+    scene.draw(program, kSceneTextureUnit, true);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  gl::Texture map_;
+  gl::Framebuffer fb_;
+  ReferenceFrameKey key_;
+  bool has_key_ = false;
+  int done_ = 0;
+  std::vector<scene::LightSample> samples_;
+};
+
+}  // namespace
+
+exec::PassType raster_reference_pass_type() {
+  graph::PassTypeDecl d;
+  d.name = "reference_raster";
+  d.description = "Ground truth: accumulated hard visibility of shadow maps from stratified light points (progressive)";
+  d.slots = {
+      {"scene", Access::read, SlotKind::imported, {}, Usage::imported, true},
+      {"light", Access::read, SlotKind::imported, {}, Usage::imported, true},
+      {"camera", Access::read, SlotKind::imported, {}, Usage::imported, false},
+      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
+      {"normal", Access::read, SlotKind::texture, {}, Usage::sampled, true},
+      {"accumulation", Access::read_write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
+      {"mask", Access::write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
+  };
+  d.same_size_groups = {{"position", "normal", "accumulation", "mask"}};
+  d.params = {
+      int_param("samples", 1024, 1, 65536, "", "Light sample points N (one shadow map each)"),
+      int_param("map_size", 4096, 64, 16384, "texels", "Resolution of each sample point's depth map"),
+      int_param("maps_per_frame", 16, 1, 65536, "", "Shadow maps accumulated per frame (progressive)"),
+      int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the ray tracer's)"),
+      real_param("receiver_bias", 1.0, 0.0, 16.0, "texels", "Receiver moved towards the sample point by this many texel footprints x tan(incidence)"),
+      real_param("slope_bias", 0.0, 0.0, 10.0, "", "glPolygonOffset factor of the sample maps"),
+      real_param("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "glPolygonOffset units of the sample maps"),
+  };
+  return {d, [] { return std::make_unique<RasterReferencePass>(); }};
+}
+
+}  // namespace penumbra::reference

@@ -1,0 +1,148 @@
+// The ray-traced reference as a pass: G-buffer read-back -> trace_visibility -> upload.
+#include "raytraced_reference_pass.h"
+
+#include <chrono>
+#include <mutex>
+#include <optional>
+
+#include <spdlog/spdlog.h>
+
+#include "exec/gpu_scene.h"
+#include "raytraced_reference.h"
+#include "reference_frame_key.h"
+#include "reference_params.h"
+#include "reference_progress.h"
+
+namespace penumbra::reference {
+namespace {
+
+using graph::Access;
+using graph::Format;
+using graph::SlotKind;
+using graph::Usage;
+
+// One Embree scene per GpuScene, shared by every pass instance (a recompile or a switch of
+// method must not rebuild the BVH). Keyed like the reset rule: pointer + triangles + bounds.
+struct RaySceneCache {
+  std::mutex mutex;
+  const void* scene = nullptr;
+  std::size_t triangles = 0;
+  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};
+  std::optional<RayScene> ray_scene;
+};
+
+RaySceneCache& ray_scene_cache() {
+  static RaySceneCache cache;
+  return cache;
+}
+
+Result<const RayScene*> ray_scene_for(const exec::GpuScene& gpu) {
+  RaySceneCache& c = ray_scene_cache();
+  std::lock_guard<std::mutex> lock(c.mutex);
+  const scene::Scene& s = gpu.cpu();
+  if (!c.ray_scene || c.scene != &gpu || c.triangles != gpu.triangle_count() || c.bounds_min != s.bounds.min ||
+      c.bounds_max != s.bounds.max) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Result<RayScene> built = RayScene::build(s);
+    if (!built) return built.error();
+    c.ray_scene.emplace(std::move(*built));
+    c.scene = &gpu;
+    c.triangles = gpu.triangle_count();
+    c.bounds_min = s.bounds.min;
+    c.bounds_max = s.bounds.max;
+    spdlog::info("reference: Embree scene of {} triangles built in {:.0f} ms", c.triangles,
+                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return &*c.ray_scene;
+}
+
+class RaytracedReferencePass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    const exec::FrameInputs& frame = ctx.frame();
+    if (!frame.scene) return make_error("reference_raytraced: no scene", ErrorKind::internal);
+    const int rays = ctx.integer("rays"), seed = ctx.integer("seed");
+    gl::Texture& mask = ctx.texture("mask");
+    ReferenceFrameKey key = make_frame_key(frame, {double(rays), double(seed)});
+    if (!has_key_ || key != key_ || result_.size() != static_cast<size_t>(mask.width()) * mask.height()) {
+      if (has_key_) count_reference_reset();
+      if (Status s = trace(ctx, rays, seed); !s) return s;
+      key_ = std::move(key);
+      has_key_ = true;
+    }
+    mask.upload(result_.data());
+    return {};
+  }
+
+ private:
+  Status trace(exec::PassContext& ctx, int rays, int seed) {
+    auto rs = ray_scene_for(*ctx.frame().scene);
+    if (!rs) return rs.error();
+    // G-buffer read-back; rows stay in GL order (bottom to top): the trace is per pixel, and the
+    // result is uploaded in the same order.
+    const gl::Texture& pos_tex = ctx.texture("position");
+    const gl::Texture& nrm_tex = ctx.texture("normal");
+    const int w = pos_tex.width(), h = pos_tex.height();
+    const std::vector<float> pos = pos_tex.read(), nrm = nrm_tex.read();
+    const int nc = nrm_tex.info().channels;
+    const size_t n = static_cast<size_t>(w) * h;
+    std::vector<glm::vec3> positions(n), normals(n);
+    metrics::CoverageMask coverage(n, 0);
+    size_t receivers = 0;
+    for (size_t i = 0; i < n; ++i) {
+      positions[i] = glm::vec3(pos[4 * i], pos[4 * i + 1], pos[4 * i + 2]);
+      normals[i] = glm::vec3(nrm[nc * i], nc > 1 ? nrm[nc * i + 1] : 0.0f, nc > 2 ? nrm[nc * i + 2] : 0.0f);
+      coverage[i] = pos[4 * i + 3] > 0.0f ? 1 : 0;
+      receivers += coverage[i];
+    }
+    const std::int64_t total = static_cast<std::int64_t>(receivers) * rays;
+    const auto t0 = std::chrono::steady_clock::now();
+    int next_report = 1;  // in tenths
+    TraceOptions options{.samples = rays, .seed = static_cast<uint32_t>(seed)};
+    options.progress = [&](float f) {
+      publish_reference_progress("raytraced", static_cast<std::int64_t>(f * static_cast<double>(total)), total);
+      // Progress lines only for long traces (a full-HD frame at M = 256), every ~10%.
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (f * 10.0f >= static_cast<float>(next_report) && f < 1.0f && elapsed > 2.0) {
+        spdlog::info("reference: ray tracing {:.0f}% ({} receivers x {} rays)", 100.0f * f, receivers, rays);
+        next_report = static_cast<int>(f * 10.0f) + 1;
+      }
+    };
+    metrics::MaskImage traced = trace_visibility(**rs, ctx.frame().light, positions, normals, w, h, options, coverage);
+    result_ = std::move(traced.pixels);
+    publish_reference_progress("raytraced", total, total);
+    spdlog::info("reference: traced {}x{} ({} receivers x {} rays) in {:.2f} s", w, h, receivers, rays,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return {};
+  }
+
+  ReferenceFrameKey key_;
+  bool has_key_ = false;
+  std::vector<float> result_;  // R32F texels, GL row order
+};
+
+}  // namespace
+
+exec::PassType raytraced_reference_pass_type() {
+  graph::PassTypeDecl d;
+  d.name = "reference_raytraced";
+  d.description = "Ground truth: exact area-light visibility ray-traced on the CPU (Embree), traced when inputs change";
+  d.slots = {
+      {"scene", Access::read, SlotKind::imported, {}, Usage::imported, true},
+      {"light", Access::read, SlotKind::imported, {}, Usage::imported, true},
+      {"camera", Access::read, SlotKind::imported, {}, Usage::imported, false},
+      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
+      {"normal", Access::read, SlotKind::texture, {}, Usage::sampled, true},
+      // Written by a texture upload (glTextureSubImage2D); declared as an incoherent write so
+      // readers get a barrier, which is harmless for an upload.
+      {"mask", Access::write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
+  };
+  d.same_size_groups = {{"position", "normal", "mask"}};
+  d.params = {
+      int_param("rays", 256, 1, 65536, "", "Shadow rays per pixel M (stratified light points)"),
+      int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the raster reference's)"),
+  };
+  return {d, [] { return std::make_unique<RaytracedReferencePass>(); }};
+}
+
+}  // namespace penumbra::reference

@@ -1,0 +1,18 @@
+#include "reference_technique.h"
+
+#include "raster_reference_pass.h"
+#include "raytraced_reference_pass.h"
+
+namespace penumbra::reference {
+
+void register_techniques(plugin::TechniqueRegistry& registry) {
+  registry.add({.name = "reference",
+                .description = "Ground truth: accumulated shadow maps (raster) or Embree ray tracing (raytraced)",
+                .graph_file = "techniques/reference/reference.json",
+                .register_passes = [](exec::PassLibrary& library) {
+                  library.add(raster_reference_pass_type());
+                  library.add(raytraced_reference_pass_type());
+                }});
+}
+
+}  // namespace penumbra::reference

@@ -1,0 +1,96 @@
+// `penumbra eval` end to end (OSMesa, 64x48, 16 rays): it writes DESIGN.md's JSON, and bad
+// input exits 2 with one message and no output file.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct EvalRun {
+  int code = -1;
+  std::string err;
+};
+
+EvalRun run_eval(const std::string& args) {
+  const fs::path dir = fs::temp_directory_path() / ("penumbra_eval_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path err = dir / "stderr.txt";
+  const std::string cmd = std::string(PENUMBRA_CLI) + " eval --context osmesa " + args + " >/dev/null 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  EvalRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream f(err);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  r.err = ss.str();
+  return r;
+}
+
+fs::path out_dir() {
+  fs::path d = fs::temp_directory_path() / ("penumbra_eval_out_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+}  // namespace
+
+TEST(EvalCli, WritesTheJsonSchemaAndHeatMaps) {
+  const fs::path d = out_dir();
+  const fs::path json = d / "eval.json";
+  EvalRun r = run_eval("--scene ball --techniques hard,reference --set method=raster --set samples=16 "
+                   "--set map_size=256 --size 64x48 --rays 16 --frames 2 --json " + json.string() +
+                   " --heatmaps " + (d / "heat").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream f(json);
+  const nlohmann::json j = nlohmann::json::parse(f);
+  EXPECT_EQ(j["scene"], "ball");
+  EXPECT_EQ(j["reference"], "raytraced");
+  ASSERT_EQ(j["rows"].size(), 2u);
+  for (const auto& row : j["rows"]) {
+    for (const char* k : {"rmse", "rmse_penumbra", "mae", "max_error", "ssim", "gpu_ms"}) {
+      ASSERT_TRUE(row.contains(k)) << k;
+      EXPECT_TRUE(row[k].is_number()) << k;
+    }
+    EXPECT_GE(row["rmse"].get<double>(), 0.0);
+    EXPECT_LE(row["ssim"].get<double>(), 1.0);
+  }
+  EXPECT_EQ(j["rows"][0]["technique"], "hard");
+  // A hard shadow misses the whole penumbra; the raster reference does not.
+  EXPECT_GT(j["rows"][0]["rmse_penumbra"].get<double>(), j["rows"][1]["rmse_penumbra"].get<double>());
+  EXPECT_TRUE(fs::exists(d / "heat" / "ball_hard_error.png"));
+  EXPECT_TRUE(fs::exists(d / "heat" / "ball_reference_error.png"));
+}
+
+TEST(EvalCli, BadInputExitsTwoWithoutFiles) {
+  const fs::path d = out_dir();
+  const fs::path json = d / "eval.json";
+  const std::string out = " --json " + json.string() + " --heatmaps " + (d / "heat").string();
+  const struct {
+    std::string args, says;
+  } cases[] = {
+      {"--scene ball --techniques nope" + out, "unknown technique 'nope'"},
+      {"--scene nowhere --techniques hard" + out, "nowhere"},
+      {"--scene ball --techniques hard --size 0x10" + out, "size"},
+      {"--scene ball --techniques hard --reference magic" + out, "--reference"},
+      {"--scene ball --techniques hard --set no_such_key=1" + out, "no_such_key"},
+      {"--scene ball" + out, "--techniques"},
+  };
+  for (const auto& c : cases) {
+    EvalRun r = run_eval(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(json)) << c.args;
+    EXPECT_FALSE(fs::exists(d / "heat")) << c.args;
+  }
+}
