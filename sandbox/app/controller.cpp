@@ -1,0 +1,431 @@
+#include "app/controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+
+#include "app/preset.h"
+#include "plugin/frame_graph.h"
+#include "scene/load_scene.h"
+#include "util/png.h"
+
+namespace penumbra::sandbox {
+
+namespace {
+const char* gl_error_name(GLenum e) {
+  switch (e) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "GL error";
+  }
+}
+
+metrics::MaskImage first_channel(const gl::Texture& t, int channel) {
+  metrics::MaskImage m(t.width(), t.height());
+  std::vector<float> texels = t.read();
+  const int n = t.info().channels;
+  for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = texels[i * n + channel];
+  return m;
+}
+}  // namespace
+
+SandboxController::SandboxController(const plugin::TechniqueRegistry& registry,
+                                     const exec::PassLibrary& library)
+    : registry_(registry), library_(library),
+      primary_(std::make_unique<plugin::TechniqueSession>(registry, library)) {}
+
+SandboxController::~SandboxController() = default;
+
+Status SandboxController::note(Status s) {
+  message_ = s ? std::string() : s.error().to_string();
+  return s;
+}
+
+Status SandboxController::init(const std::string& scene, const std::string& technique, int width,
+                               int height) {
+  if (Status s = resize(width, height); !s) return s;
+  if (Status s = load_scene(scene); !s) return s;
+  std::string t = technique;
+  if (t.empty()) {
+    if (registry_.names().empty())
+      return make_error("no techniques are registered (register_builtin_techniques added none)",
+                        ErrorKind::internal);
+    t = registry_.names().front();
+  }
+  return set_technique(t);
+}
+
+// --- scene, camera, light ---------------------------------------------------------------------
+
+Status SandboxController::load_scene(const std::string& name_or_path) {
+  Result<scene::Scene> loaded = scene::load_scene(name_or_path);
+  if (!loaded) return note(loaded.error());
+  primary_->set_scene(*loaded);
+  if (secondary_) secondary_->set_scene(*loaded);
+  scene_name_ = name_or_path;
+  return note({});
+}
+
+void SandboxController::move_camera(const glm::vec3& axes, float dt, bool fast) {
+  scene::Camera& cam = camera();
+  const glm::vec3 forward = cam.forward();
+  const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+  // Half the scene's bounding radius per second feels right from a fence to a courtyard.
+  float speed = primary_->has_scene() ? std::max(0.5f * primary_->scene().bounds.radius(), 0.5f) : 1.0f;
+  if (fast) speed *= 4.0f;
+  cam.position += (axes.x * right + axes.y * glm::vec3(0, 1, 0) + axes.z * forward) * speed * dt;
+}
+
+void SandboxController::look(float dx, float dy) {
+  constexpr float kRadiansPerPixel = 0.003f;
+  scene::Camera& cam = camera();
+  cam.yaw += dx * kRadiansPerPixel;
+  cam.pitch = std::clamp(cam.pitch - dy * kRadiansPerPixel, -1.55f, 1.55f);
+}
+
+Status SandboxController::set_camera(const std::optional<glm::vec3>& position,
+                                     const std::optional<glm::vec3>& look_at,
+                                     std::optional<float> yaw_deg, std::optional<float> pitch_deg) {
+  scene::Camera& cam = camera();
+  if (position) cam.position = *position;
+  if (look_at) {
+    if (glm::length(*look_at - cam.position) < 1e-6f)
+      return note(make_error("camera look_at point equals the camera position"));
+    scene::Camera aimed = scene::Camera::look_at(cam.position, *look_at, cam.fov_y, cam.near_plane,
+                                                 cam.far_plane);
+    cam.yaw = aimed.yaw;
+    cam.pitch = aimed.pitch;
+  }
+  if (yaw_deg) cam.yaw = glm::radians(*yaw_deg);
+  if (pitch_deg) cam.pitch = std::clamp(glm::radians(*pitch_deg), -1.55f, 1.55f);
+  return note({});
+}
+
+void SandboxController::set_light_direction(glm::vec3 direction) {
+  if (glm::length(direction) < 1e-6f) return;
+  direction = glm::normalize(direction);
+  scene::Light& l = light();
+  if (l.type == scene::LightType::directional && primary_->has_scene()) {
+    // Keep the emitter disk at its distance from the scene centre, now along -direction.
+    const glm::vec3 c = primary_->scene().bounds.center();
+    float distance = std::max(glm::length(l.position - c), 2.0f * primary_->scene().bounds.radius());
+    l.position = c - direction * distance;
+  }
+  l.direction = direction;
+}
+
+void SandboxController::set_light_type(scene::LightType type) { light().type = type; }
+
+Status SandboxController::set_light_size(float diameter) {
+  if (!(diameter >= 0.0f) || !std::isfinite(diameter))
+    return note(make_error("light size must be >= 0 (emitter disk diameter, world units)"));
+  light().size = diameter;
+  return note({});
+}
+
+void SandboxController::align_light_with_camera() {
+  if (light().type == scene::LightType::spot) {
+    light().position = camera().position;
+    light().direction = camera().forward();
+  } else {
+    set_light_direction(camera().forward());
+  }
+}
+
+Status SandboxController::set_shadow_size(int texels) {
+  if (Status s = primary_->set_shadow_size(texels); !s) return note(s);
+  if (secondary_)
+    if (Status s = secondary_->set_shadow_size(texels); !s) return note(s);
+  return note({});
+}
+
+// --- technique and parameters -----------------------------------------------------------------
+
+Status SandboxController::set_technique(const std::string& name) {
+  return note(primary_->set_technique(name));
+}
+
+Status SandboxController::set_param(const std::string& name, const std::string& text) {
+  // The session checks the key (naming the valid ones), the type and the range.
+  return note(primary_->set_param(name + "=" + text));
+}
+
+Status SandboxController::set_param_value(const std::string& name, const graph::ParamValue& value) {
+  return note(primary_->set_param(name, value));
+}
+
+Status SandboxController::reset_param(const std::string& name) {
+  if (name == "all") {
+    // Value by value, so uniform parameters never recompile; structural ones do (set_param).
+    for (const graph::ParamDesc& d : primary_->params().descs())
+      if (Status s = primary_->set_param(d.name, d.default_value); !s) return note(s);
+    return note({});
+  }
+  const graph::ParamDesc* d = primary_->params().find(name);
+  if (!d) return note(primary_->set_param(name + "="));
+  return note(primary_->set_param(d->name, d->default_value));
+}
+
+Status SandboxController::save_preset(const std::string& path) const {
+  return write_text_file(path, format_preset(primary_->technique(), primary_->params()));
+}
+
+Status SandboxController::load_preset(const std::string& path) {
+  Result<std::string> text = read_text_file(path);
+  if (!text) return note(text.error());
+  Result<Preset> preset = parse_preset(*text, path);
+  if (!preset) return note(preset.error());
+  // Validate against a copy first: nothing is applied unless everything fits.
+  Result<graph::ParameterSet> next = preset_applied(*preset, primary_->technique(), primary_->params());
+  if (!next) {
+    Error e = next.error();
+    e.file = path;
+    return note(e);
+  }
+  return note(primary_->apply_preset(preset->parameters_json));
+}
+
+// --- debug switches ---------------------------------------------------------------------------
+
+Status SandboxController::set_no_reuse(bool on) {
+  for (plugin::TechniqueSession* s : {primary_.get(), secondary_.get()}) {
+    if (!s) continue;
+    s->compile_options().no_reuse = on;
+    if (Status st = s->recompile(); !st) return note(st);
+  }
+  return note({});
+}
+
+Status SandboxController::set_extended_lifetimes(bool on) {
+  for (plugin::TechniqueSession* s : {primary_.get(), secondary_.get()}) {
+    if (!s) continue;
+    s->compile_options().extended_lifetimes = on;
+    if (Status st = s->recompile(); !st) return note(st);
+  }
+  return note({});
+}
+
+void SandboxController::set_immediate(bool on) {
+  primary_->executor().options().immediate = on;
+  if (secondary_) secondary_->executor().options().immediate = on;
+}
+
+// --- viewer and compare -----------------------------------------------------------------------
+
+Status SandboxController::view_resource(const std::string& name) {
+  auto& keep = primary_->compile_options().keep_alive;
+  if (name == viewer_.resource && (name.empty() || keep == std::vector<std::string>{name}))
+    return note({});
+  viewer_.resource = name;
+  keep.clear();
+  if (!name.empty()) keep.push_back(name);
+  if (Status s = primary_->recompile(); !s) return note(s);
+  // A useful first range: view distance for screen depth, [0, 1] for everything else.
+  if (gl::Texture* t = primary_->executor().resource(name)) {
+    bool screen_depth = t->info().is_depth && t->width() == width_ && t->height() == height_;
+    viewer_.min = screen_depth ? camera().near_plane : 0.0f;
+    viewer_.max = screen_depth && primary_->has_scene()
+                      ? glm::length(camera().position - primary_->scene().bounds.center()) +
+                            primary_->scene().bounds.radius()
+                      : 1.0f;
+  }
+  return note({});
+}
+
+std::string SandboxController::default_compare_partner() const {
+  std::vector<std::string> names = registry_.names();
+  if (registry_.find("reference")) return "reference";
+  auto it = std::find(names.begin(), names.end(), primary_->technique());
+  if (it == names.end() || names.size() == 1) return primary_->technique();
+  ++it;
+  return it == names.end() ? names.front() : *it;
+}
+
+Status SandboxController::configure_secondary() {
+  if (!secondary_) secondary_ = std::make_unique<plugin::TechniqueSession>(registry_, library_);
+  if (!secondary_->has_scene()) secondary_->set_scene(primary_->scene());
+  if (Status s = secondary_->resize(width_, height_); !s) return s;
+  if (Status s = secondary_->set_shadow_size(primary_->settings().shadow_size); !s) return s;
+  secondary_->compile_options().no_reuse = primary_->compile_options().no_reuse;
+  secondary_->compile_options().extended_lifetimes = primary_->compile_options().extended_lifetimes;
+  secondary_->executor().options().immediate = primary_->executor().options().immediate;
+  if (secondary_->technique() != compare_.with) return secondary_->set_technique(compare_.with);
+  return {};
+}
+
+Status SandboxController::set_compare(bool enabled, const std::string& with) {
+  if (!enabled) {
+    compare_.enabled = false;
+    compare_.stats.reset();
+    secondary_.reset();  // frees its textures: compare mode costs nothing when off
+    return note({});
+  }
+  std::string partner = with.empty() ? (compare_.with.empty() ? default_compare_partner() : compare_.with)
+                                     : with;
+  if (!registry_.find(partner)) return note(primary_->set_technique(partner));  // names valid ones
+  std::string previous = compare_.with;
+  compare_.with = partner;
+  if (Status s = configure_secondary(); !s) {
+    compare_.with = previous;
+    if (!compare_.enabled) secondary_.reset();
+    return note(s);
+  }
+  compare_.enabled = true;
+  compare_.stats.reset();
+  return note({});
+}
+
+void SandboxController::update_compare_stats() {
+  gl::Texture* a = primary_->executor().resource(plugin::kShadowMask);
+  gl::Texture* b = secondary_->executor().resource(plugin::kShadowMask);
+  gl::Texture* pos = primary_->executor().resource("gbuffer_position");
+  if (!a || !b || !pos) {
+    compare_.stats_error = "shadow_mask or gbuffer_position missing";
+    return;
+  }
+  metrics::MaskImage position_w = first_channel(*pos, 3);
+  metrics::CoverageMask coverage(position_w.pixels.size());
+  for (size_t i = 0; i < coverage.size(); ++i) coverage[i] = position_w.pixels[i] > 0.0f ? 1 : 0;
+  // The secondary plays the reference: RMSE of the primary against it.
+  Result<metrics::MaskErrors> e = metrics::compare_masks(first_channel(*a, 0), first_channel(*b, 0), coverage);
+  if (!e) {
+    compare_.stats_error = e.error().to_string();
+    return;
+  }
+  compare_.stats = *e;
+  compare_.stats_error.clear();
+}
+
+// --- frames -----------------------------------------------------------------------------------
+
+Status SandboxController::resize(int width, int height) {
+  if (width == width_ && height == height_) return {};
+  if (Status s = primary_->resize(width, height); !s) return note(s);
+  if (secondary_)
+    if (Status s = secondary_->resize(width, height); !s) return note(s);
+  if (Status s = display_.resize(width, height); !s) return note(s);
+  width_ = width;
+  height_ = height;
+  return {};
+}
+
+void SandboxController::reload_shaders() {
+  primary_->shaders().reload_changed();
+  if (secondary_) secondary_->shaders().reload_changed();
+  display_.shaders().reload_changed();
+}
+
+std::vector<Error> SandboxController::shader_errors() const {
+  std::vector<Error> all = primary_->shaders().errors();
+  if (secondary_)
+    for (Error& e : secondary_->shaders().errors()) all.push_back(std::move(e));
+  for (Error& e : display_.shaders().errors()) all.push_back(std::move(e));
+  return all;
+}
+
+Status SandboxController::render_frame() {
+  auto now = std::chrono::steady_clock::now();
+  if (now - last_reload_ > std::chrono::milliseconds(500)) {
+    reload_shaders();
+    last_reload_ = now;
+  }
+  if (Status s = primary_->render(); !s) return s;
+  bool comparing = compare_.enabled && secondary_;
+  if (comparing) {
+    secondary_->camera() = primary_->camera();
+    secondary_->light() = primary_->light();
+    if (Status s = secondary_->render(); !s) return s;
+    if (compare_.stats_every > 0 && frames_ % compare_.stats_every == 0) update_compare_stats();
+  }
+  ++frames_;
+
+  // Compose: base layer (colour, split or error map), then the viewed resource.
+  display_.begin();
+  DisplayPass::Layer base;
+  base.viewport = {0, 0, width_, height_};
+  gl::Texture* color_a = primary_->executor().resource(plugin::kColor);
+  if (!color_a) return make_error("the frame has no 'color' resource", ErrorKind::internal);
+  if (comparing && compare_.view == CompareState::View::error) {
+    gl::Texture* a = primary_->executor().resource(plugin::kShadowMask);
+    gl::Texture* b = secondary_->executor().resource(plugin::kShadowMask);
+    gl::Texture* pos = primary_->executor().resource("gbuffer_position");
+    if (!a || !b || !pos) return make_error("compare: shadow_mask or gbuffer_position missing", ErrorKind::internal);
+    if (Status s = display_.difference(*a, *b, *pos); !s) return s;
+    base.texture = &display_.difference_texture();
+    base.map = ViewerSettings::Map::heat;
+    base.range = {0.0f, std::max(compare_.error_max, 1e-4f)};
+    base.coverage_in_g = true;
+    if (Status s = display_.draw(base); !s) return s;
+  } else if (comparing) {
+    gl::Texture* color_b = secondary_->executor().resource(plugin::kColor);
+    int split_px = std::clamp(static_cast<int>(std::lround(compare_.split * width_)), 0, width_);
+    DisplayPass::Layer left = base, right = base;
+    left.texture = color_a;
+    left.viewport = {0, 0, split_px, height_};
+    left.uv_rect = {0.0f, 0.0f, float(split_px) / width_, 1.0f};
+    right.texture = color_b ? color_b : color_a;
+    right.viewport = {split_px, 0, width_ - split_px, height_};
+    right.uv_rect = {float(split_px) / width_, 0.0f, float(width_ - split_px) / width_, 1.0f};
+    if (split_px > 0)
+      if (Status s = display_.draw(left); !s) return s;
+    if (split_px < width_)
+      if (Status s = display_.draw(right); !s) return s;
+  } else {
+    base.texture = color_a;
+    if (Status s = display_.draw(base); !s) return s;
+  }
+
+  if (!viewer_.resource.empty()) {
+    if (gl::Texture* t = primary_->executor().resource(viewer_.resource)) {
+      DisplayPass::Layer v;
+      v.texture = t;
+      v.map = viewer_.map;
+      v.channel = viewer_.channel;
+      v.range = {viewer_.min, viewer_.max};
+      v.linearize_depth = viewer_.linearize_depth && t->info().is_depth && t->width() == width_ &&
+                          t->height() == height_;
+      v.near_far = {camera().near_plane, camera().far_plane};
+      if (viewer_.placement == ViewerSettings::Placement::full) {
+        v.viewport = {0, 0, width_, height_};
+      } else {
+        // Bottom-right, a third of the window, the texture's aspect kept.
+        int w = std::max(width_ / 3, 1);
+        int h = std::max(static_cast<int>(std::lround(float(w) * t->height() / std::max(t->width(), 1))), 1);
+        h = std::min(h, height_);
+        v.viewport = {width_ - w - 8, 8, w, h};
+      }
+      if (Status s = display_.draw(v); !s) return s;
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return {};
+}
+
+Status SandboxController::save_presentation_png(const std::string& path) const {
+  const gl::Texture& t = display_.target();
+  std::vector<unsigned char> bottom_up(static_cast<size_t>(t.width()) * t.height() * 4);
+  glGetTextureImage(t.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottom_up.size()),
+                    bottom_up.data());
+  std::vector<unsigned char> top_down(bottom_up.size());
+  const size_t row = static_cast<size_t>(t.width()) * 4;
+  for (int y = 0; y < t.height(); ++y)
+    std::copy_n(&bottom_up[(t.height() - 1 - y) * row], row, &top_down[y * row]);
+  return write_png_rgba8(path, t.width(), t.height(), top_down);
+}
+
+Status SandboxController::check_gl_errors(const std::string& when) {
+  std::string codes;
+  for (int i = 0; i < 32; ++i) {
+    GLenum e = glGetError();
+    if (e == GL_NO_ERROR) break;
+    codes += (codes.empty() ? "" : ", ") + std::string(gl_error_name(e));
+  }
+  if (codes.empty()) return {};
+  return make_error("GL error " + when + ": " + codes, ErrorKind::internal);
+}
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,138 @@
+#pragma once
+// SandboxController: the sandbox's state and every action on it. The ImGui panels and script
+// steps call the SAME methods, so a script exercises exactly what a user clicks. It needs a
+// current GL context but no window: the frame is composed into its own presentation texture
+// (the window host blits it to the back buffer and draws the UI on top; a headless host reads it
+// back), so soak tests run it under OSMesa.
+//
+//   SandboxController c(registry, library);
+//   if (Status s = c.init("showcase", "pcss", 480, 320); !s) fail(s);
+//   c.set_param("samples", "32");
+//   c.set_compare(true);              // second session: "reference" if registered
+//   c.render_frame();
+//   c.save_presentation_png("out.png");
+//
+// Compare mode runs TWO TechniqueSessions (primary and secondary) over the same scene, camera
+// and light: each keeps its own compiled plan, texture pool and timings, so both can be inspected
+// and swapping one never recompiles the other. The cost is a second scene upload and a second
+// G-buffer per frame, which only compare mode pays.
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/display.h"
+#include "exec/pass.h"
+#include "metrics/mask_metrics.h"
+#include "plugin/technique.h"
+#include "plugin/technique_session.h"
+
+namespace penumbra::sandbox {
+
+struct CompareState {
+  bool enabled = false;
+  std::string with;                 // secondary technique
+  enum class View { split, error } view = View::split;
+  float split = 0.5f;               // split position, fraction of the width (left = primary)
+  float error_max = 0.25f;          // |a - b| shown white in the heat map
+  int stats_every = 10;             // frames between RMSE read-backs
+  std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
+  std::string stats_error;
+};
+
+class SandboxController {
+ public:
+  SandboxController(const plugin::TechniqueRegistry& registry, const exec::PassLibrary& library);
+  ~SandboxController();
+
+  // Loads the scene, selects the technique (empty: the first registered) and sizes the frame.
+  Status init(const std::string& scene, const std::string& technique, int width, int height);
+
+  // --- scene, camera, light ---------------------------------------------------------------
+  // A built-in name or a glTF path. On failure the previous scene stays.
+  Status load_scene(const std::string& name_or_path);
+  const std::string& scene_name() const { return scene_name_; }
+  scene::Camera& camera() { return primary_->camera(); }
+  scene::Light& light() { return primary_->light(); }
+  // Free-fly camera: `axes` = (right, up, forward) in [-1, 1], dt in seconds; fast = Shift.
+  void move_camera(const glm::vec3& axes, float dt, bool fast);
+  // Mouse look, in pixels of mouse motion.
+  void look(float dx, float dy);
+  Status set_camera(const std::optional<glm::vec3>& position, const std::optional<glm::vec3>& look_at,
+                    std::optional<float> yaw_deg, std::optional<float> pitch_deg);
+  // Directional lights keep their emitter disk at the same distance from the scene centre.
+  void set_light_direction(glm::vec3 direction);
+  void set_light_type(scene::LightType type);
+  Status set_light_size(float diameter);
+  // Space in the window: the light looks where the camera looks (Sterna's demo).
+  void align_light_with_camera();
+  Status set_shadow_size(int texels);
+
+  // --- technique and parameters -------------------------------------------------------------
+  std::vector<std::string> technique_names() const { return registry_.names(); }
+  const plugin::Technique* technique_info(const std::string& name) const { return registry_.find(name); }
+  Status set_technique(const std::string& name);
+  plugin::TechniqueSession& session() { return *primary_; }
+  plugin::TechniqueSession* secondary() { return secondary_.get(); }
+  // `text` as on the command line ("32", "true", "vogel"); structural ones recompile.
+  Status set_param(const std::string& name, const std::string& text);
+  Status set_param_value(const std::string& name, const graph::ParamValue& value);
+  Status reset_param(const std::string& name);  // "all" resets every parameter
+  Status save_preset(const std::string& path) const;
+  Status load_preset(const std::string& path);
+
+  // --- graph debug switches -----------------------------------------------------------------
+  Status set_no_reuse(bool on);
+  Status set_extended_lifetimes(bool on);
+  void set_immediate(bool on);
+
+  // --- resource viewer, compare -------------------------------------------------------------
+  ViewerSettings& viewer() { return viewer_; }
+  // Keeps `name` alive in the primary plan (recompiles) and shows it; "" turns the viewer off.
+  Status view_resource(const std::string& name);
+  CompareState& compare() { return compare_; }
+  // `with` empty: "reference" when registered, else the technique after the primary.
+  Status set_compare(bool enabled, const std::string& with = "");
+  void set_compare_view(CompareState::View view) { compare_.view = view; }
+
+  // --- frames -------------------------------------------------------------------------------
+  Status resize(int width, int height);
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Renders the session(s), updates compare statistics, composes the presentation texture and
+  // (every ~0.5 s) reloads changed shaders.
+  Status render_frame();
+  std::uint64_t frames() const { return frames_; }
+  GLuint presentation_framebuffer() const { return display_.framebuffer(); }
+  Status save_presentation_png(const std::string& path) const;
+  // Shader compile errors of every program in use (technique passes and display), with file:line.
+  std::vector<Error> shader_errors() const;
+  void reload_shaders();
+  // Drains glGetError; an error lists every code seen.
+  static Status check_gl_errors(const std::string& when);
+
+  // The last action's outcome for the UI: "" after success.
+  const std::string& message() const { return message_; }
+  Status note(Status s);  // records s in message() and returns it
+
+ private:
+  Status configure_secondary();
+  void update_compare_stats();
+  std::string default_compare_partner() const;
+
+  const plugin::TechniqueRegistry& registry_;
+  const exec::PassLibrary& library_;
+  std::unique_ptr<plugin::TechniqueSession> primary_;
+  std::unique_ptr<plugin::TechniqueSession> secondary_;
+  std::string scene_name_;
+  DisplayPass display_;
+  ViewerSettings viewer_;
+  CompareState compare_;
+  int width_ = 0, height_ = 0;
+  std::uint64_t frames_ = 0;
+  std::string message_;
+  std::chrono::steady_clock::time_point last_reload_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,30 @@
+#pragma once
+// Command line of penumbra-sandbox (GL-free, unit-tested):
+//   penumbra-sandbox [--scene NAME|FILE] [--technique T] [--size WxH] [--shadow-size N]
+//                    [--script FILE] [--screenshot OUT.png] [--context glfw|osmesa|egl]
+//                    [--write-exhaustive-script FILE [--screenshot-dir DIR]]
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "util/error.h"
+
+namespace penumbra::sandbox {
+
+struct SandboxOptions {
+  std::string scene = "showcase";
+  std::string technique;  // empty: the first registered
+  int width = 1280, height = 800;  // pixels
+  std::optional<int> shadow_size;  // texels
+  std::string script;
+  std::string screenshot;
+  std::string context;  // empty: glfw
+  std::string exhaustive_script;  // tool mode: write the generated test script and exit
+  std::string screenshot_dir = ".";
+  bool help = false;
+};
+
+Result<SandboxOptions> parse_sandbox_options(const std::vector<std::string>& argv);
+std::string sandbox_help();
+
+}  // namespace penumbra::sandbox

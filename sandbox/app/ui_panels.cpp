@@ -1,0 +1,270 @@
+#include "app/ui_panels.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/widget_spec.h"
+#include "scene/builtin_scenes.h"
+
+namespace penumbra::sandbox {
+
+namespace {
+
+const ImVec4 kGrey(0.5f, 0.5f, 0.5f, 1.0f);
+const ImVec4 kRed(1.0f, 0.35f, 0.3f, 1.0f);
+
+void tooltip(const std::string& text) {
+  if (!text.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+}
+
+std::string mib(std::uint64_t bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f MiB", double(bytes) / (1024.0 * 1024.0));
+  return buf;
+}
+
+// Widgets ignore returned Statuses on purpose: the controller shows every error in message().
+
+// One parameter: the widget its description asks for, then a reset button.
+void parameter_widget(SandboxController& c, const graph::ParamDesc& d) {
+  const WidgetSpec w = widget_for(d);
+  const graph::ParameterSet& params = c.session().params();
+  ImGui::PushID(d.name.c_str());
+  switch (w.kind) {
+    case WidgetKind::checkbox: {
+      bool v = params.get_bool(d.name);
+      if (ImGui::Checkbox(w.label.c_str(), &v)) (void)c.set_param_value(d.name, v);
+      break;
+    }
+    case WidgetKind::slider_int:
+    case WidgetKind::drag_int: {
+      int v = params.get_int(d.name);
+      bool changed = w.kind == WidgetKind::slider_int
+                         ? ImGui::SliderInt(w.label.c_str(), &v, int(w.min), int(w.max))
+                         : ImGui::DragInt(w.label.c_str(), &v, float(w.drag_speed));
+      // Structural ones recompile on every step of a drag: compiling is CPU-cheap and the pool
+      // hands the same textures back.
+      if (changed) (void)c.set_param_value(d.name, v);
+      break;
+    }
+    case WidgetKind::slider_float:
+    case WidgetKind::drag_float: {
+      float v = static_cast<float>(params.get_real(d.name));
+      bool changed = w.kind == WidgetKind::slider_float
+                         ? ImGui::SliderFloat(w.label.c_str(), &v, float(w.min), float(w.max), "%.4g")
+                         : ImGui::DragFloat(w.label.c_str(), &v, float(w.drag_speed), 0.0f, 0.0f, "%.4g");
+      if (changed) (void)c.set_param_value(d.name, double(v));
+      break;
+    }
+    case WidgetKind::combo: {
+      std::string current = params.get_enum(d.name);
+      if (ImGui::BeginCombo(w.label.c_str(), current.c_str())) {
+        for (const std::string& o : w.options)
+          if (ImGui::Selectable(o.c_str(), o == current)) (void)c.set_param_value(d.name, o);
+        ImGui::EndCombo();
+      }
+      break;
+    }
+  }
+  tooltip(w.tooltip);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("reset")) (void)c.reset_param(d.name);
+  tooltip("back to the default " + graph::param_value_to_string(d.default_value));
+  ImGui::PopID();
+}
+
+void scene_panel(SandboxController& c, UiState& ui) {
+  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (ImGui::BeginCombo("scene", c.scene_name().c_str())) {
+    for (const std::string& n : scene::builtin_scene_names())
+      if (ImGui::Selectable(n.c_str(), n == c.scene_name())) (void)c.load_scene(n);
+    ImGui::EndCombo();
+  }
+  ImGui::InputText("glTF", ui.scene_path, sizeof ui.scene_path);
+  ImGui::SameLine();
+  if (ImGui::Button("open")) (void)c.load_scene(ui.scene_path);
+  tooltip("load a .gltf/.glb file; on failure the current scene stays");
+  const scene::Camera& cam = c.camera();
+  ImGui::TextDisabled("camera (%.2f, %.2f, %.2f) yaw %.0f pitch %.0f deg", cam.position.x, cam.position.y,
+                      cam.position.z, glm::degrees(cam.yaw), glm::degrees(cam.pitch));
+}
+
+void light_panel(SandboxController& c) {
+  if (!ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  scene::Light& l = c.light();
+  int type = l.type == scene::LightType::spot ? 1 : 0;
+  if (ImGui::Combo("type", &type, "directional\0spot\0"))
+    c.set_light_type(type == 1 ? scene::LightType::spot : scene::LightType::directional);
+  glm::vec3 dir = l.direction;
+  if (ImGui::DragFloat3("direction", &dir.x, 0.01f, -1.0f, 1.0f)) (void)c.set_light_direction(dir);
+  ImGui::DragFloat3("position", &l.position.x, 0.05f);
+  tooltip("emitter disk centre, world units");
+  float size = l.size;
+  if (ImGui::DragFloat("size", &size, 0.005f, 0.0f, 100.0f, "%.3f")) (void)c.set_light_size(std::max(size, 0.0f));
+  tooltip("emitter disk DIAMETER, world units");
+  if (l.type == scene::LightType::spot) {
+    float deg = glm::degrees(l.spot_angle);
+    if (ImGui::SliderFloat("spot angle", &deg, 1.0f, 89.0f, "%.0f deg")) l.spot_angle = glm::radians(deg);
+  }
+  static const int kSizes[] = {256, 512, 1024, 2048, 4096};
+  int shadow = c.session().settings().shadow_size;
+  if (ImGui::BeginCombo("shadow map", (std::to_string(shadow) + " texels").c_str())) {
+    for (int s : kSizes)
+      if (ImGui::Selectable(std::to_string(s).c_str(), s == shadow)) (void)c.set_shadow_size(s);
+    ImGui::EndCombo();
+  }
+  if (ImGui::Button("light = view direction (Space)")) (void)c.align_light_with_camera();
+}
+
+void technique_panel(SandboxController& c, UiState& ui) {
+  if (!ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  plugin::TechniqueSession& s = c.session();
+  if (ImGui::BeginCombo("technique", s.technique().c_str())) {
+    for (const std::string& n : c.technique_names()) {
+      if (ImGui::Selectable(n.c_str(), n == s.technique())) (void)c.set_technique(n);
+      if (const plugin::Technique* t = c.technique_info(n)) tooltip(t->description);
+    }
+    ImGui::EndCombo();
+  }
+  if (const plugin::Technique* t = c.technique_info(s.technique()))
+    ImGui::TextWrapped("%s", t->description.c_str());
+  for (const graph::ParamDesc& d : s.params().descs()) parameter_widget(c, d);
+  if (ImGui::Button("reset all")) (void)c.reset_param("all");
+  ImGui::SameLine();
+  ImGui::TextDisabled("compiles: %d", s.compile_count());
+  ImGui::InputText("preset", ui.preset_path, sizeof ui.preset_path);
+  if (ImGui::Button("save preset")) {
+    Status st = c.save_preset(ui.preset_path);
+    ui.host_message = st ? std::string("saved ") + ui.preset_path : st.error().to_string();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("load preset")) {
+    Status st = c.load_preset(ui.preset_path);
+    ui.host_message = st ? std::string("loaded ") + ui.preset_path : "";
+  }
+}
+
+void graph_panel(SandboxController& c) {
+  if (!ImGui::CollapsingHeader("Graph")) return;
+  plugin::TechniqueSession& s = c.session();
+  const graph::CompiledPlan& plan = s.plan();
+  const auto& timings = s.executor().timings();
+  double total = 0.0;
+  for (size_t i = 0; i < plan.passes.size(); ++i) {
+    const graph::PlannedPass& p = plan.passes[i];
+    const exec::PassTiming* t = i < timings.size() ? &timings[i] : nullptr;
+    if (t) total += t->last_ms;
+    ImGui::Text("%2zu %-22s %6.3f ms", i, p.name.c_str(), t ? t->last_ms : 0.0);
+    tooltip("type " + p.type + (p.barrier_reasons.empty() ? "" : "\nbarriers: " + graph::barrier_bits_to_string(p.barriers)));
+    if (t && !t->history.empty()) {
+      std::vector<float> h(t->history.begin(), t->history.end());
+      ImGui::PushID(static_cast<int>(i));
+      ImGui::PlotLines("##history", h.data(), static_cast<int>(h.size()), 0, nullptr, 0.0f, FLT_MAX,
+                       ImVec2(0, 24));
+      ImGui::PopID();
+    }
+  }
+  for (const std::string& n : plan.culled) ImGui::TextColored(kGrey, "   %-22s culled", n.c_str());
+  for (const std::string& n : plan.disabled) ImGui::TextColored(kGrey, "   %-22s disabled", n.c_str());
+  ImGui::Text("total %.3f ms (%s)", total,
+              s.executor().timing_mode() == exec::TimingMode::gpu_timestamps ? "GPU timestamps"
+                                                                              : "glFinish + CPU clock");
+  ImGui::Text("memory: naive %s, assigned %s", mib(plan.memory.naive_bytes).c_str(),
+              mib(plan.memory.assigned_bytes).c_str());
+  ImGui::Text("pool: %zu textures, %s", s.pool().texture_count(), mib(s.pool().bytes()).c_str());
+  bool no_reuse = s.compile_options().no_reuse;
+  if (ImGui::Checkbox("no reuse", &no_reuse)) (void)c.set_no_reuse(no_reuse);
+  bool extended = s.compile_options().extended_lifetimes;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("extended lifetimes", &extended)) (void)c.set_extended_lifetimes(extended);
+  bool immediate = s.executor().options().immediate;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("immediate", &immediate)) (void)c.set_immediate(immediate);
+  tooltip("glFinish and a GL error check after every pass");
+}
+
+void viewer_panel(SandboxController& c) {
+  if (!ImGui::CollapsingHeader("Resource viewer")) return;
+  ViewerSettings& v = c.viewer();
+  const char* shown = v.resource.empty() ? "(off)" : v.resource.c_str();
+  if (ImGui::BeginCombo("resource", shown)) {
+    if (ImGui::Selectable("(off)", v.resource.empty())) (void)c.view_resource("");
+    for (const std::string& n : c.session().executor().resource_names())
+      if (ImGui::Selectable(n.c_str(), n == v.resource)) (void)c.view_resource(n);
+    ImGui::EndCombo();
+  }
+  int map = static_cast<int>(v.map);
+  if (ImGui::Combo("colour map", &map, "colour\0grey\0heat\0")) v.map = static_cast<ViewerSettings::Map>(map);
+  int place = static_cast<int>(v.placement);
+  if (ImGui::Combo("placement", &place, "full screen\0inset\0"))
+    v.placement = static_cast<ViewerSettings::Placement>(place);
+  ImGui::DragFloatRange2("range", &v.min, &v.max, 0.005f, 0.0f, 0.0f, "min %.3f", "max %.3f");
+  ImGui::SliderInt("channel", &v.channel, 0, 3);
+  ImGui::Checkbox("linearise depth", &v.linearize_depth);
+  tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
+}
+
+void compare_panel(SandboxController& c) {
+  if (!ImGui::CollapsingHeader("Compare")) return;
+  CompareState& cs = c.compare();
+  bool on = cs.enabled;
+  if (ImGui::Checkbox("compare", &on)) (void)c.set_compare(on);
+  tooltip("split screen: left = active technique, right = the other one (its reference)");
+  if (ImGui::BeginCombo("against", cs.with.empty() ? "(default)" : cs.with.c_str())) {
+    for (const std::string& n : c.technique_names())
+      if (ImGui::Selectable(n.c_str(), n == cs.with)) (void)c.set_compare(true, n);
+    ImGui::EndCombo();
+  }
+  if (!cs.enabled) return;
+  int view = static_cast<int>(cs.view);
+  if (ImGui::Combo("view", &view, "split\0error heat map\0")) (void)c.set_compare_view(static_cast<CompareState::View>(view));
+  if (cs.view == CompareState::View::split) ImGui::SliderFloat("split", &cs.split, 0.0f, 1.0f);
+  else ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "|a-b| = %.2f is white");
+  ImGui::SliderInt("stats every", &cs.stats_every, 1, 120, "%d frames");
+  if (cs.stats) {
+    ImGui::Text("RMSE %.4f   penumbra RMSE %.4f", cs.stats->rmse, cs.stats->rmse_penumbra);
+    ImGui::Text("MAE %.4f   max %.3f   %zu px (%zu penumbra)", cs.stats->mae, cs.stats->max_error,
+                cs.stats->pixels, cs.stats->penumbra_pixels);
+  }
+  if (!cs.stats_error.empty()) ImGui::TextColored(kRed, "%s", cs.stats_error.c_str());
+}
+
+void messages_panel(SandboxController& c, UiState& ui) {
+  if (ImGui::Button("screenshot (F12)")) ui.screenshot_requested = true;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##shot", ui.screenshot_path, sizeof ui.screenshot_path);
+  if (!c.message().empty()) ImGui::TextColored(kRed, "%s", c.message().c_str());
+  if (!ui.host_message.empty()) ImGui::TextWrapped("%s", ui.host_message.c_str());
+  for (const Error& e : c.shader_errors()) {
+    ImGui::TextColored(kRed, "%s", e.to_string().c_str());
+    if (!e.details.empty()) tooltip(e.details);
+  }
+}
+
+}  // namespace
+
+void draw_sandbox_ui(SandboxController& c, UiState& ui) {
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  const float height = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 200.0f);
+  // At most 45% of the width, so small (scripted, test) windows still show the scene.
+  const float width = std::min(420.0f, 0.45f * ImGui::GetIO().DisplaySize.x);
+  ImGui::SetNextWindowSize(ImVec2(width, std::min(height, 900.0f)), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Penumbra");
+  // Widgets take half the panel: long parameter names and the reset buttons stay readable.
+  ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.5f);
+  ImGui::Text("%.1f fps  %dx%d", ImGui::GetIO().Framerate, c.width(), c.height());
+  messages_panel(c, ui);
+  scene_panel(c, ui);
+  light_panel(c);
+  technique_panel(c, ui);
+  graph_panel(c);
+  viewer_panel(c);
+  compare_panel(c);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,209 @@
+// The sandbox controller under OSMesa (no window): the same calls the ImGui widgets and script
+// steps make, checked on a tiny technique of the tests' own.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "app/controller.h"
+#include "app/preset.h"
+#include "image_stats.h"
+#include "support/test_context.h"
+#include "techniques/builtin_techniques.h"
+#include "tiny_technique.h"
+
+namespace penumbra::sandbox {
+namespace {
+
+using sandbox_test::kTinyTechnique;
+
+struct Fixture : ::testing::Test {
+  Fixture() {
+    test::gl_context();
+    register_builtin_techniques(registry);
+    sandbox_test::register_tiny_technique(registry);
+    library = make_pass_library(registry);
+  }
+  void SetUp() override {
+    controller = std::make_unique<SandboxController>(registry, library);
+    ASSERT_TRUE(controller->session().set_shadow_size(256));
+    Status s = controller->init("ball", kTinyTechnique, 96, 64);
+    ASSERT_TRUE(s) << s.error().to_string();
+  }
+  std::vector<float> mask() {
+    return controller->session().executor().resource("shadow_mask")->read();
+  }
+  std::filesystem::path temp(const std::string& name) {
+    return std::filesystem::temp_directory_path() / ("penumbra_sandbox_" + name);
+  }
+  plugin::TechniqueRegistry registry;
+  exec::PassLibrary library;
+  std::unique_ptr<SandboxController> controller;
+};
+
+TEST_F(Fixture, UniformChangeUpdatesTheValueWithoutRecompiling) {
+  ASSERT_TRUE(controller->render_frame());
+  const int compiles = controller->session().compile_count();
+  ASSERT_TRUE(controller->set_param("lit_level", "0.25"));
+  ASSERT_TRUE(controller->set_param_value("stripe_width", 4));
+  ASSERT_TRUE(controller->set_param_value("pattern", std::string("checker")));
+  EXPECT_EQ(controller->session().compile_count(), compiles);
+  ASSERT_TRUE(controller->render_frame());
+  // darken halves the level: 0.125 inside the cells (R16F holds it exactly), 0.5 elsewhere.
+  std::vector<float> m = mask();
+  EXPECT_NE(std::find(m.begin(), m.end(), 0.125f), m.end());
+  EXPECT_EQ(std::find(m.begin(), m.end(), 0.25f), m.end());
+}
+
+TEST_F(Fixture, StructuralChangeRecompilesAndChangesThePlan) {
+  const int compiles = controller->session().compile_count();
+  ASSERT_TRUE(controller->set_param_value("darken", false));
+  EXPECT_EQ(controller->session().compile_count(), compiles + 1);
+  const auto& disabled = controller->session().plan().disabled;
+  EXPECT_NE(std::find(disabled.begin(), disabled.end(), "darken"), disabled.end());
+  ASSERT_TRUE(controller->render_frame());
+  std::vector<float> m = mask();
+  EXPECT_NE(std::find(m.begin(), m.end(), 0.5f), m.end());  // the undarkened level
+}
+
+TEST_F(Fixture, BadParameterIsAMessageAndChangesNothing) {
+  const std::string before = controller->session().params().to_json();
+  EXPECT_FALSE(controller->set_param("lit_level", "7"));
+  EXPECT_FALSE(controller->set_param("no_such_param", "1"));
+  EXPECT_NE(controller->message().find("no_such_param"), std::string::npos) << controller->message();
+  EXPECT_EQ(controller->session().params().to_json(), before);
+}
+
+TEST_F(Fixture, ResetAllRestoresDefaults) {
+  ASSERT_TRUE(controller->set_param("lit_level", "0.1"));
+  ASSERT_TRUE(controller->set_param("darken", "false"));
+  ASSERT_TRUE(controller->reset_param("all"));
+  EXPECT_DOUBLE_EQ(controller->session().params().get_real("lit_level"), 0.5);
+  EXPECT_TRUE(controller->session().params().get_bool("darken"));
+}
+
+TEST_F(Fixture, PresetRoundTripThroughFiles) {
+  ASSERT_TRUE(controller->set_param("lit_level", "0.75"));
+  ASSERT_TRUE(controller->set_param("pattern", "checker"));
+  const std::string path = temp("preset.json").string();
+  ASSERT_TRUE(controller->save_preset(path));
+  const std::string saved = controller->session().params().to_json();
+  ASSERT_TRUE(controller->reset_param("all"));
+  ASSERT_NE(controller->session().params().to_json(), saved);
+  Status s = controller->load_preset(path);
+  ASSERT_TRUE(s) << s.error().to_string();
+  EXPECT_EQ(controller->session().params().to_json(), saved);
+
+  // Another technique's preset and a preset with an unknown key apply nothing.
+  ASSERT_TRUE(controller->reset_param("all"));
+  const std::string defaults = controller->session().params().to_json();
+  ASSERT_TRUE(write_text_file(path, R"({"technique": "pcss", "parameters": {"lit_level": 0.1}})"));
+  EXPECT_FALSE(controller->load_preset(path));
+  EXPECT_NE(controller->message().find("pcss"), std::string::npos);
+  ASSERT_TRUE(write_text_file(path, R"({"technique": "sandbox_tiny", "parameters": {"lit_level": 0.1, "x": 1}})"));
+  EXPECT_FALSE(controller->load_preset(path));
+  EXPECT_EQ(controller->session().params().to_json(), defaults);
+  std::filesystem::remove(path);
+}
+
+TEST_F(Fixture, FailedSceneLoadKeepsThePreviousScene) {
+  EXPECT_FALSE(controller->load_scene("/nonexistent/scene.gltf"));
+  EXPECT_FALSE(controller->message().empty());
+  EXPECT_EQ(controller->scene_name(), "ball");
+  EXPECT_TRUE(controller->render_frame());
+}
+
+TEST_F(Fixture, ViewerKeepsTheResourceAliveAndShowsIt) {
+  ASSERT_TRUE(controller->view_resource("raw_mask"));
+  const auto& keep = controller->session().compile_options().keep_alive;
+  EXPECT_EQ(keep, std::vector<std::string>{"raw_mask"});
+  ASSERT_NE(controller->session().executor().resource("raw_mask"), nullptr);
+  controller->viewer().placement = ViewerSettings::Placement::full;
+  controller->viewer().map = ViewerSettings::Map::heat;
+  ASSERT_TRUE(controller->render_frame());
+  const std::string path = temp("viewer.png").string();
+  ASSERT_TRUE(controller->save_presentation_png(path));
+  auto stats = sandbox_test::png_stats(path);
+  ASSERT_TRUE(stats.loaded);
+  EXPECT_EQ(stats.width, 96);
+  EXPECT_GT(stats.variance, 10.0);  // heat-mapped stripes
+  // Depth is linearised with the camera's near/far and gets a world-unit range.
+  ASSERT_TRUE(controller->view_resource("gbuffer_depth"));
+  EXPECT_GT(controller->viewer().max, controller->viewer().min);
+  EXPECT_FLOAT_EQ(controller->viewer().min, controller->camera().near_plane);
+  ASSERT_TRUE(controller->render_frame());
+  ASSERT_TRUE(controller->view_resource(""));
+  EXPECT_TRUE(controller->session().compile_options().keep_alive.empty());
+  std::filesystem::remove(path);
+}
+
+TEST_F(Fixture, CompareSameSettingsHasZeroErrorAndDifferentHasSome) {
+  controller->compare().stats_every = 1;
+  ASSERT_TRUE(controller->set_compare(true, kTinyTechnique));
+  ASSERT_NE(controller->secondary(), nullptr);
+  ASSERT_TRUE(controller->render_frame());
+  ASSERT_TRUE(controller->compare().stats.has_value()) << controller->compare().stats_error;
+  EXPECT_EQ(controller->compare().stats->rmse, 0.0);
+  EXPECT_GT(controller->compare().stats->pixels, 0u);
+
+  // Primary at level 0 (then darkened: 0), secondary at the default 0.25 after darkening:
+  // inside stripes |a - b| = 0.25, outside both are 0.5.
+  ASSERT_TRUE(controller->set_param("lit_level", "0"));
+  const int secondary_compiles = controller->secondary()->compile_count();
+  ASSERT_TRUE(controller->render_frame());
+  const auto& st = *controller->compare().stats;
+  EXPECT_NEAR(st.max_error, 0.25, 1e-3);
+  EXPECT_GT(st.rmse, 0.05);
+  EXPECT_LT(st.rmse, 0.25);
+  EXPECT_EQ(controller->secondary()->compile_count(), secondary_compiles);  // untouched
+
+  controller->set_compare_view(CompareState::View::error);
+  ASSERT_TRUE(controller->render_frame());
+  const std::string path = temp("error.png").string();
+  ASSERT_TRUE(controller->save_presentation_png(path));
+  EXPECT_GT(sandbox_test::png_stats(path).variance, 10.0);
+  std::filesystem::remove(path);
+
+  ASSERT_TRUE(controller->set_compare(false));
+  EXPECT_EQ(controller->secondary(), nullptr);
+  EXPECT_TRUE(controller->render_frame());
+}
+
+TEST_F(Fixture, UnknownTechniqueKeepsTheCurrentOne) {
+  EXPECT_FALSE(controller->set_technique("no_such_technique"));
+  EXPECT_EQ(controller->session().technique(), kTinyTechnique);
+  EXPECT_NE(controller->message().find("sandbox_tiny"), std::string::npos);  // lists valid names
+}
+
+TEST_F(Fixture, DebugSwitchesRecompileAndStillRender) {
+  ASSERT_TRUE(controller->set_no_reuse(true));
+  EXPECT_TRUE(controller->session().plan().options.no_reuse);
+  ASSERT_TRUE(controller->set_extended_lifetimes(true));
+  controller->set_immediate(true);
+  ASSERT_TRUE(controller->render_frame());
+  EXPECT_GE(controller->session().plan().memory.assigned_bytes, controller->session().plan().memory.naive_bytes);
+  ASSERT_TRUE(controller->set_no_reuse(false));
+  ASSERT_TRUE(controller->set_extended_lifetimes(false));
+  controller->set_immediate(false);
+  EXPECT_TRUE(SandboxController::check_gl_errors("after debug switches"));
+}
+
+TEST_F(Fixture, LightAndCameraControls) {
+  controller->set_light_direction({0, -1, 0});
+  EXPECT_NEAR(glm::length(controller->light().direction), 1.0f, 1e-5f);
+  EXPECT_FALSE(controller->set_light_size(-1.0f));
+  ASSERT_TRUE(controller->set_light_size(0.2f));
+  EXPECT_FLOAT_EQ(controller->light().size, 0.2f);
+  controller->align_light_with_camera();
+  glm::vec3 f = controller->camera().forward();
+  EXPECT_NEAR(glm::dot(controller->light().direction, f), 1.0f, 1e-4f);
+  glm::vec3 p0 = controller->camera().position;
+  controller->move_camera({0, 0, 1}, 0.5f, false);
+  EXPECT_GT(glm::dot(controller->camera().position - p0, f), 0.0f);
+  ASSERT_TRUE(controller->set_camera(glm::vec3(0, 3, 6), glm::vec3(0, 0, 0), std::nullopt, std::nullopt));
+  EXPECT_LT(controller->camera().pitch, 0.0f);
+  EXPECT_TRUE(controller->render_frame());
+}
+
+}  // namespace
+}  // namespace penumbra::sandbox

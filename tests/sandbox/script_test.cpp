@@ -1,0 +1,163 @@
+// Script parsing, its errors (which must name the step), the generated scripts and the command
+// line (no window, no GL).
+#include <gtest/gtest.h>
+
+#include "app/options.h"
+#include "app/script.h"
+
+namespace penumbra::sandbox {
+namespace {
+
+TEST(Script, ParsesEveryStepKind) {
+  auto steps = parse_script(R"([
+    {"scene": "ball"}, {"technique": "pcss"}, {"set": {"samples": 32, "use_blur": false, "light_size": 0.25,
+     "kernel": "box"}}, {"reset": "all"},
+    {"camera": {"position": [0, 2, 6], "yaw": 10, "pitch": -15}},
+    {"light": {"type": "spot", "direction": [-1, -2, -1], "size": 0.3}}, {"shadow_size": 1024},
+    {"wait": 3}, {"screenshot": "a.png"}, {"compare": true}, {"compare": "reference"},
+    {"compare": {"view": "error"}}, {"view": {"resource": "gbuffer_depth", "map": "heat", "placement": "full"}},
+    {"resize": [320, 200]}, {"expect_no_gl_error": true}])", "s.json");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  ASSERT_EQ(steps->size(), 15u);
+  const auto& s = *steps;
+  EXPECT_EQ(s[0].kind, StepKind::scene);
+  EXPECT_EQ(s[2].kind, StepKind::set);
+  ASSERT_EQ(s[2].assignments.size(), 4u);
+  EXPECT_EQ(s[2].assignments[0], (std::pair<std::string, std::string>{"samples", "32"}));
+  EXPECT_EQ(s[2].assignments[1].second, "false");
+  EXPECT_EQ(s[2].assignments[2].second, "0.25");
+  EXPECT_EQ(s[2].assignments[3].second, "box");
+  EXPECT_EQ(s[3].text, "all");
+  EXPECT_FLOAT_EQ(s[4].camera.position->y, 2.0f);
+  EXPECT_FLOAT_EQ(*s[4].camera.pitch_deg, -15.0f);
+  EXPECT_EQ(*s[5].light.type, "spot");
+  EXPECT_FLOAT_EQ(*s[5].light.size, 0.3f);
+  EXPECT_EQ(s[6].number, 1024);
+  EXPECT_EQ(s[7].number, 3);
+  EXPECT_EQ(s[8].text, "a.png");
+  EXPECT_TRUE(s[9].compare.enabled);
+  EXPECT_EQ(s[10].compare.with, "reference");
+  EXPECT_EQ(s[11].compare.view, "error");
+  EXPECT_EQ(s[12].view.resource, "gbuffer_depth");
+  EXPECT_EQ(s[12].view.placement, "full");
+  EXPECT_EQ(s[13].width, 320);
+  EXPECT_EQ(s[13].height, 200);
+  EXPECT_EQ(s[14].kind, StepKind::expect_no_gl_error);
+  for (size_t i = 0; i < s.size(); ++i) EXPECT_EQ(s[i].index, static_cast<int>(i));
+}
+
+// Every bad step is reported with its index, the file, and what was expected.
+struct BadScript {
+  const char* text;
+  const char* must_contain;
+};
+
+class ScriptErrors : public ::testing::TestWithParam<BadScript> {};
+
+TEST_P(ScriptErrors, NameTheStep) {
+  auto r = parse_script(GetParam().text, "bad.json");
+  ASSERT_FALSE(r);
+  const std::string msg = r.error().to_string();
+  EXPECT_NE(msg.find("bad.json"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(GetParam().must_contain), std::string::npos) << msg;
+  EXPECT_EQ(r.error().exit_code(), 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Sandbox, ScriptErrors,
+    ::testing::Values(
+        BadScript{R"([{"wait": 1}, {"jump": 3}])", "step 1: unknown step 'jump'"},
+        BadScript{R"([{"wait": 0}])", "step 0: wait (frames) must be in [1, 100000]"},
+        BadScript{R"([{"wait": 1}, {"wait": 1}, {"resize": [10]}])", "step 2: resize must be [width, height]"},
+        BadScript{R"([{"technique": 3}])", "step 0: technique must be a string"},
+        BadScript{R"([{"wait": 1, "technique": "x"}])", "step 0: each step must be an object with exactly one key"},
+        BadScript{R"([{"camera": {"position": [1, 2]}}])", "step 0: camera.position must be an array of 3 numbers"},
+        BadScript{R"([{"camera": {"roll": 3}}])", "step 0: camera: unknown key 'roll'"},
+        BadScript{R"([{"light": {"type": "area"}}])", "step 0: light.type must be \"directional\" or \"spot\""},
+        BadScript{R"([{"light": {"size": -1}}])", "step 0: light.size must be >= 0"},
+        BadScript{R"([{"set": {}}])", "step 0: set must be a non-empty object"},
+        BadScript{R"([{"set": {"k": [1]}}])", "step 0: set: value of 'k' must be a boolean, number or string"},
+        BadScript{R"([{"compare": {"view": "side"}}])", "step 0: compare.view must be"},
+        BadScript{R"([{"expect_no_gl_error": false}])", "step 0: expect_no_gl_error must be true"},
+        BadScript{R"({"wait": 1})", "must be a JSON array"},
+        BadScript{R"([{"wait": 1},)", "not valid JSON"}));
+
+TEST(Script, RuntimeErrorsUseTheSameWords) {
+  auto steps = parse_script(R"([{"wait": 1}, {"technique": "nope"}])", "s.json");
+  ASSERT_TRUE(steps);
+  Error e = step_error((*steps)[1], "unknown technique 'nope'");
+  EXPECT_NE(e.to_string().find("script step 1 (technique): unknown technique 'nope'"), std::string::npos)
+      << e.to_string();
+}
+
+std::vector<TechniqueInfo> two_techniques() {
+  using graph::ParamType;
+  return {{"a", {{.name = "r", .type = ParamType::real, .default_value = 0.5, .min = 0.0, .max = 2.0},
+                 {.name = "b", .type = ParamType::boolean, .default_value = true, .structural = true}}},
+          {"b", {{.name = "k", .type = ParamType::enumeration, .default_value = std::string("x"),
+                  .options = {"x", "y"}},
+                 {.name = "n", .type = ParamType::integer, .default_value = 3}}}};
+}
+
+TEST(Script, ExhaustiveScriptVisitsMinMaxDefaultOfEveryParameter) {
+  std::string text = exhaustive_script(two_techniques(), "shots", 480, 320, 512);
+  auto steps = parse_script(text, "generated");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  std::vector<std::string> sets, techniques, shots;
+  for (const ScriptStep& s : *steps) {
+    if (s.kind == StepKind::set) sets.push_back(s.assignments[0].first + "=" + s.assignments[0].second);
+    if (s.kind == StepKind::technique) techniques.push_back(s.text);
+    if (s.kind == StepKind::screenshot) shots.push_back(s.text);
+  }
+  EXPECT_EQ(techniques, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(sets, (std::vector<std::string>{"r=0.0", "r=2.0", "r=0.5", "b=false", "b=true", "b=true", "k=x",
+                                            "k=y", "k=x", "n=7", "n=3"}));
+  EXPECT_EQ(shots, (std::vector<std::string>{"shots/a.png", "shots/a_compare.png", "shots/b.png",
+                                             "shots/b_compare.png"}));
+}
+
+TEST(Script, SoakScriptIsReproducibleAndParses) {
+  std::string a = soak_script(two_techniques(), 7, 500, 128);
+  EXPECT_EQ(a, soak_script(two_techniques(), 7, 500, 128));
+  EXPECT_NE(a, soak_script(two_techniques(), 8, 500, 128));
+  auto steps = parse_script(a, "soak");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  EXPECT_EQ(steps->size(), 500u);
+  int resizes = 0, swaps = 0, sets = 0;
+  for (const ScriptStep& s : *steps) {
+    resizes += s.kind == StepKind::resize;
+    swaps += s.kind == StepKind::technique;
+    sets += s.kind == StepKind::set;
+    if (s.kind == StepKind::resize) {
+      EXPECT_GE(s.width, 16);
+      EXPECT_LE(s.width, 128);
+    }
+  }
+  EXPECT_GT(resizes, 10);
+  EXPECT_GT(swaps, 10);
+  EXPECT_GT(sets, 100);
+}
+
+TEST(Options, ParsesTheDocumentedCommandLine) {
+  auto o = parse_sandbox_options({"--scene", "ball", "--technique", "pcss", "--size", "480x320", "--script",
+                                  "s.json", "--screenshot", "o.png", "--context", "glfw"});
+  ASSERT_TRUE(o) << o.error().to_string();
+  EXPECT_EQ(o->scene, "ball");
+  EXPECT_EQ(o->technique, "pcss");
+  EXPECT_EQ(o->width, 480);
+  EXPECT_EQ(o->height, 320);
+  EXPECT_EQ(o->script, "s.json");
+  EXPECT_EQ(o->screenshot, "o.png");
+  EXPECT_TRUE(parse_sandbox_options({"--help"})->help);
+  EXPECT_NE(sandbox_help().find("--script FILE"), std::string::npos);
+}
+
+TEST(Options, BadInputIsAnError) {
+  EXPECT_FALSE(parse_sandbox_options({"--size", "480"}));
+  EXPECT_FALSE(parse_sandbox_options({"--context", "vulkan"}));
+  EXPECT_FALSE(parse_sandbox_options({"--frobnicate"}));
+  EXPECT_FALSE(parse_sandbox_options({"stray"}));
+}
+
+}  // namespace
+}  // namespace penumbra::sandbox
