@@ -9,6 +9,7 @@
 #include "gl/texture_png.h"
 #include "plugin/technique_session.h"
 #include "techniques/builtin_techniques.h"
+#include "techniques/reference/reference_progress.h"
 
 namespace penumbra::cli {
 namespace {
@@ -37,6 +38,23 @@ Status render_frames(plugin::TechniqueSession& session, int frames) {
   for (int i = 0; i < frames; ++i)
     if (Status s = session.render(); !s) return s;
   return {};
+}
+
+// The progressive reference is written once it has all its samples, with progress on stderr.
+Status finish_reference(plugin::TechniqueSession& session) {
+  int last_tenth = -1;
+  for (int frame = 0; frame < 1000000; ++frame) {
+    const reference::ReferenceProgress p = reference::reference_progress();
+    if (p.complete()) return {};
+    int tenth = static_cast<int>(p.fraction() * 10.0);
+    if (tenth != last_tenth) {
+      std::fprintf(stderr, "  reference (%s): %lld / %lld\n", p.method.c_str(),
+                   static_cast<long long>(p.done), static_cast<long long>(p.total));
+      last_tenth = tenth;
+    }
+    if (Status s = session.render(); !s) return s;
+  }
+  return make_error("the reference did not complete", ErrorKind::internal);
 }
 
 Status write_outputs(plugin::TechniqueSession& session, const std::string& out, const std::string& mask) {
@@ -135,6 +153,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "rendering %s on %s at %dx%d (shadow map %d)...\n", t.c_str(),
                  scene->name.c_str(), width, height, shadow);
     if (Status s = render_frames(session, frames); !s) return fail(s.error());
+    if (t == "reference")
+      if (Status s = finish_reference(session); !s) return fail(s.error());
     std::string o = all ? dir + "/" + scene->name + "_" + t + ".png" : out;
     std::string m = all ? dir + "/" + scene->name + "_" + t + "_mask.png" : mask;
     if (Status s = write_outputs(session, o, m); !s) return fail(s.error());
