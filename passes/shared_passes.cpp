@@ -3,7 +3,10 @@
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/hard_mask/hard_mask_pass.h"
 #include "passes/lighting/lighting_pass.h"
+#include "passes/pcf_mask/pcf_mask_pass.h"
+#include "passes/pcss/pcss_passes.h"
 #include "passes/shadow_map/shadow_map_pass.h"
+#include "passes/visualize/visualize_pass.h"
 
 namespace penumbra {
 
@@ -12,6 +15,10 @@ void register_shared_passes(exec::PassLibrary& library) {
   library.add(passes::shadow_map_pass_type());
   library.add(passes::hard_mask_pass_type());
   library.add(passes::lighting_pass_type());
+  library.add(passes::pcf_mask_pass_type());
+  library.add(passes::pcss_blocker_search_pass_type());
+  library.add(passes::pcss_filter_pass_type());
+  library.add(passes::visualize_pass_type());
 }
 
 }  // namespace penumbra

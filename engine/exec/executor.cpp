@@ -72,8 +72,9 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
     bool software = renderer && (std::string(renderer).find("llvmpipe") != std::string::npos ||
                                  std::string(renderer).find("softpipe") != std::string::npos);
     TimingMode mode = !options_.timing_enabled ? TimingMode::off
-                      : software              ? TimingMode::cpu_finish
-                                              : TimingMode::gpu_timestamps;
+                      : options_.force_timing_mode ? *options_.force_timing_mode
+                      : software                   ? TimingMode::cpu_finish
+                                                   : TimingMode::gpu_timestamps;
     if (mode != timer_.mode() || timer_.timings().size() != names.size()) timer_.reset(names, mode);
   }
   timer_.begin_frame(frames_);
@@ -113,6 +114,7 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
       Error e = s.error();
       e.where = "pass '" + pass.name + "' (" + pass.type + ")" + (e.where.empty() ? "" : ": " + e.where);
       result = e;
+      timer_.abort_frame();
       break;
     }
   }

@@ -13,6 +13,7 @@
 // lifetimes are compile options (graph::CompileOptions); immediate mode is here: glFinish and a
 // glGetError check after every pass, so the failing pass is named.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ struct ExecutorOptions {
   bool immediate = false;
   // Automatic: timestamps on a GPU, glFinish + CPU clock on a software renderer.
   bool timing_enabled = true;
+  // Tests: force a timing mode (e.g. timestamps on llvmpipe, to exercise the query queue).
+  std::optional<TimingMode> force_timing_mode;
 };
 
 class Executor {
@@ -52,6 +55,8 @@ class Executor {
 
   ExecutorOptions& options() { return options_; }
   const std::vector<PassTiming>& timings() const { return timer_.timings(); }
+  // Waits for the GPU timings still in flight (benchmarks call this before reading timings()).
+  void flush_timings() { timer_.flush(); }
   TimingMode timing_mode() const { return timer_.mode(); }
   std::uint32_t frames_executed() const { return frames_; }
 

@@ -15,16 +15,10 @@ void PassTimer::reset(const std::vector<std::string>& pass_names, TimingMode mod
   mode_ = mode;
   timings_.clear();
   for (const std::string& n : pass_names) timings_.push_back({n, 0.0, {}});
-  for (GpuSlot& s : slots_) {
-    s.begin.clear();
-    s.end.clear();
-    s.pending = false;
-    if (mode_ != TimingMode::gpu_timestamps) continue;
-    for (size_t i = 0; i < pass_names.size(); ++i) {
-      s.begin.push_back(std::make_unique<gl::TimerQuery>());
-      s.end.push_back(std::make_unique<gl::TimerQuery>());
-    }
-  }
+  pending_.clear();
+  spare_.clear();
+  current_ = {};
+  in_frame_ = false;
 }
 
 void PassTimer::record(size_t index, double ms) {
@@ -34,24 +28,47 @@ void PassTimer::record(size_t index, double ms) {
   if (t.history.size() > PassTiming::kHistory) t.history.pop_front();
 }
 
-void PassTimer::begin_frame(std::uint32_t frame) {
-  frame_ = frame;
-  if (mode_ != TimingMode::gpu_timestamps) return;
-  // Collect the frame that last used this slot, if the GPU has finished it; never wait.
-  GpuSlot& s = slots_[frame_ % kFrames];
-  if (!s.pending) return;
-  if (s.end.empty() || !s.end.back()->available()) {
-    s.pending = false;  // drop this sample rather than stall
-    return;
+PassTimer::FrameQueries PassTimer::take_query_set() {
+  if (!spare_.empty()) {
+    FrameQueries f = std::move(spare_.back());
+    spare_.pop_back();
+    return f;
   }
-  for (size_t i = 0; i < s.begin.size(); ++i)
-    record(i, static_cast<double>(s.end[i]->result_ns() - s.begin[i]->result_ns()) * 1e-6);
-  s.pending = false;
+  FrameQueries f;
+  for (size_t i = 0; i < timings_.size(); ++i) {
+    f.begin.push_back(std::make_unique<gl::TimerQuery>());
+    f.end.push_back(std::make_unique<gl::TimerQuery>());
+  }
+  return f;
+}
+
+void PassTimer::collect(bool wait) {
+  while (!pending_.empty()) {
+    FrameQueries& f = pending_.front();
+    // Queries complete in submission order: the frame's last end stamp covers all of them.
+    if (!wait && !f.end.empty() && !f.end.back()->available()) break;
+    for (size_t i = 0; i < f.begin.size(); ++i)
+      record(i, static_cast<double>(f.end[i]->result_ns() - f.begin[i]->result_ns()) * 1e-6);
+    spare_.push_back(std::move(f));
+    pending_.pop_front();
+  }
+}
+
+void PassTimer::begin_frame(std::uint32_t frame) {
+  if (mode_ != TimingMode::gpu_timestamps) return;
+  collect(false);
+  while (pending_.size() >= kMaxPendingFrames) {
+    FrameQueries& oldest = pending_.front();
+    (void)oldest.end.back()->result_ns();  // waits for the GPU to reach it
+    collect(false);
+  }
+  current_ = take_query_set();
+  in_frame_ = true;
 }
 
 void PassTimer::begin_pass(size_t index) {
   if (mode_ == TimingMode::gpu_timestamps) {
-    slots_[frame_ % kFrames].begin[index]->timestamp();
+    current_.begin[index]->timestamp();
   } else if (mode_ == TimingMode::cpu_finish) {
     glFinish();
     cpu_start_ = std::chrono::steady_clock::now();
@@ -60,7 +77,7 @@ void PassTimer::begin_pass(size_t index) {
 
 void PassTimer::end_pass(size_t index) {
   if (mode_ == TimingMode::gpu_timestamps) {
-    slots_[frame_ % kFrames].end[index]->timestamp();
+    current_.end[index]->timestamp();
   } else if (mode_ == TimingMode::cpu_finish) {
     glFinish();
     auto dt = std::chrono::steady_clock::now() - cpu_start_;
@@ -69,7 +86,21 @@ void PassTimer::end_pass(size_t index) {
 }
 
 void PassTimer::end_frame() {
-  if (mode_ == TimingMode::gpu_timestamps) slots_[frame_ % kFrames].pending = true;
+  if (mode_ != TimingMode::gpu_timestamps || !in_frame_) return;
+  pending_.push_back(std::move(current_));
+  current_ = {};
+  in_frame_ = false;
+}
+
+void PassTimer::abort_frame() {
+  if (!in_frame_) return;
+  spare_.push_back(std::move(current_));
+  current_ = {};
+  in_frame_ = false;
+}
+
+void PassTimer::flush() {
+  if (mode_ == TimingMode::gpu_timestamps) collect(true);
 }
 
 double PassTimer::total_last_ms() const {

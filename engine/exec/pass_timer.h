@@ -1,6 +1,10 @@
 #pragma once
-// Per-pass timing. On a GPU: GL_TIMESTAMP queries around every pass, read kFramesInFlight
-// frames later and only when available, so timing never stalls the pipeline. On llvmpipe timer
+// Per-pass timing. On a GPU: GL_TIMESTAMP queries around every pass; each frame's queries wait
+// in a queue and are read once GL_QUERY_RESULT_AVAILABLE says so, a few frames later, so timing
+// does not stall the pipeline. Only when the CPU runs more than kMaxPendingFrames ahead of the
+// GPU is the oldest frame's result waited for (the driver would throttle such a loop at
+// present time anyway); no measurement is ever dropped. flush() waits for all of them, for a
+// benchmark's last frames. On llvmpipe timer
 // queries do not measure the work (they return 0.1-0.8 ms for a 90 ms pass), so there the
 // executor brackets each pass with glFinish and a CPU clock instead; the table is the same.
 #include <chrono>
@@ -31,20 +35,28 @@ class PassTimer {
   void begin_pass(size_t index);
   void end_pass(size_t index);
   void end_frame();
+  // Drops the frame being recorded (a pass failed: some of its queries were never issued).
+  void abort_frame();
+  // Waits for every pending GPU measurement and records it (benchmarks, before reading).
+  void flush();
   const std::vector<PassTiming>& timings() const { return timings_; }
   double total_last_ms() const;
 
  private:
-  static constexpr int kFrames = gl::GpuSpanTimer::kFramesInFlight;
-  struct GpuSlot {
+  static constexpr size_t kMaxPendingFrames = 8;
+  struct FrameQueries {
     std::vector<std::unique_ptr<gl::TimerQuery>> begin, end;
-    bool pending = false;
   };
   void record(size_t index, double ms);
+  // Records finished frames, oldest first; with wait=true blocks until each is available.
+  void collect(bool wait);
+  FrameQueries take_query_set();
   TimingMode mode_ = TimingMode::off;
   std::vector<PassTiming> timings_;
-  GpuSlot slots_[kFrames];
-  std::uint32_t frame_ = 0;
+  std::deque<FrameQueries> pending_;  // submitted, not yet read, oldest first
+  std::vector<FrameQueries> spare_;   // read, reusable
+  FrameQueries current_;
+  bool in_frame_ = false;
   std::chrono::steady_clock::time_point cpu_start_;
 };
 

@@ -20,14 +20,4 @@ GLuint64 TimerQuery::result_ns() const {
   return ns;
 }
 
-std::optional<double> GpuSpanTimer::collect(int frame) {
-  // The slot about to be reused next frame holds the oldest measurement.
-  int slot = (frame + 1) % kFramesInFlight;
-  if (!pending_[slot]) return std::nullopt;
-  Slot& s = slots_[slot];
-  if (!s.end.available() || !s.begin.available()) return std::nullopt;
-  pending_[slot] = false;
-  return static_cast<double>(s.end.result_ns() - s.begin.result_ns()) * 1e-6;
-}
-
 }  // namespace penumbra::gl

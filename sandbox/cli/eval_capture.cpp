@@ -27,13 +27,10 @@ metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_position) {
 }
 
 Status render_timed_frames(plugin::TechniqueSession& session, int warmup, int frames) {
-  for (int i = 0; i < warmup + frames; ++i) {
+  for (int i = 0; i < warmup + frames; ++i)
     if (Status s = session.render(); !s) return s;
-    // Timestamp results arrive kFramesInFlight frames late: render that many more so the last
-    // `frames` results read are all measured frames.
-    if (i == 0 && session.executor().timing_mode() == exec::TimingMode::gpu_timestamps)
-      frames += gl::GpuSpanTimer::kFramesInFlight;
-  }
+  // GPU timestamps arrive frames late: wait for the last ones so all `frames` are recorded.
+  session.executor().flush_timings();
   return {};
 }
 

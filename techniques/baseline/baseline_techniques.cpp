@@ -1,4 +1,8 @@
-// The baselines are graphs of shared pass types (passes/), so they register no pass code.
+// The baselines are graphs of shared pass types (passes/), so they register no pass code:
+//   hard  passes/hard_mask          one comparison per pixel
+//   pcf   passes/pcf_mask           fixed-width box or Vogel-disk PCF
+//   pcss  passes/pcss               blocker search + Fernando 2005 eq. 1 + PCF
+// Descriptions and parameters live in each technique's JSON (the one description).
 #include "techniques/baseline/baseline_techniques.h"
 
 namespace penumbra::baseline {
@@ -7,6 +11,12 @@ void register_techniques(plugin::TechniqueRegistry& registry) {
   registry.add({.name = "hard",
                 .description = "Hard shadow mapping (one comparison per pixel)",
                 .graph_file = "techniques/baseline/hard.json"});
+  registry.add({.name = "pcf",
+                .description = "Percentage-closer filtering, box or Vogel-disk kernel",
+                .graph_file = "techniques/baseline/pcf.json"});
+  registry.add({.name = "pcss",
+                .description = "Percentage-closer soft shadows (Fernando 2005)",
+                .graph_file = "techniques/baseline/pcss.json"});
 }
 
 }  // namespace penumbra::baseline

@@ -155,6 +155,21 @@ TEST_F(Executor, EveryPassIsTimedOncePerFrame) {
   }
 }
 
+TEST_F(Executor, GpuTimestampsAreQueuedAndEveryFrameIsRecordedAfterFlush) {
+  ParameterSet params(graph_.parameters);
+  exec::Executor ex(library_, shaders_, pool_);
+  ex.options().force_timing_mode = exec::TimingMode::gpu_timestamps;
+  ASSERT_TRUE(ex.set_plan(compile_plan(params)));
+  constexpr int kFrames = 20;  // more than the pending-frame cap, so the queue must drain
+  for (int i = 0; i < kFrames; ++i) run(ex, params);
+  ex.flush_timings();
+  EXPECT_EQ(ex.timing_mode(), exec::TimingMode::gpu_timestamps);
+  for (const exec::PassTiming& t : ex.timings()) {
+    EXPECT_EQ(t.history.size(), size_t(kFrames)) << t.name;
+    for (float ms : t.history) EXPECT_GE(ms, 0.0f) << t.name;
+  }
+}
+
 TEST_F(Executor, KeepAliveResourceIsNotOverwrittenByReuse) {
   ParameterSet params(graph_.parameters);
   exec::Executor ex(library_, shaders_, pool_);

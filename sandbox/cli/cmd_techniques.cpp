@@ -1,0 +1,127 @@
+// penumbra techniques [--json] [--plugin-dir DIR]: every registered technique with its
+// parameters, read from the technique's graph JSON (plugin::load_technique_graph): the one
+// description the sandbox UI, presets and `--set` also use. Needs no GL context.
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/args.h"
+#include "cli/command.h"
+#include "plugin/technique.h"
+#include "techniques/builtin_techniques.h"
+
+namespace penumbra::cli {
+namespace {
+
+const std::vector<OptionSpec> kSpecs = {
+    {"json", false, false, "", "print a JSON array instead of text"},
+    {"plugin-dir", true, false, "DIR", "also load technique plugins (*.so) from DIR"},
+};
+
+nlohmann::ordered_json value_json(const graph::ParamValue& v) {
+  if (const bool* b = std::get_if<bool>(&v)) return *b;
+  if (const int* i = std::get_if<int>(&v)) return *i;
+  if (const double* d = std::get_if<double>(&v)) return *d;
+  return std::get<std::string>(v);
+}
+
+nlohmann::ordered_json param_json(const graph::ParamDesc& p) {
+  nlohmann::ordered_json j = {{"name", p.name},
+                      {"type", graph::param_type_name(p.type)},
+                      {"default", value_json(p.default_value)},
+                      {"min", nullptr},
+                      {"max", nullptr},
+                      {"unit", p.unit},
+                      {"description", p.description},
+                      {"structural", p.structural}};
+  if (p.has_range()) {
+    j["min"] = p.min;
+    j["max"] = p.max;
+  }
+  if (p.type == graph::ParamType::enumeration) j["options"] = p.options;
+  return j;
+}
+
+// As typed after --set: enum options unquoted.
+std::string default_text(const graph::ParamDesc& p) {
+  if (const std::string* s = std::get_if<std::string>(&p.default_value)) return *s;
+  return graph::param_value_to_string(p.default_value);
+}
+
+// "[1, 64] texels", "box | vogel", "" (unbounded).
+std::string range_text(const graph::ParamDesc& p) {
+  std::string s;
+  if (p.type == graph::ParamType::enumeration) {
+    for (const std::string& o : p.options) s += (s.empty() ? "" : " | ") + o;
+    return s;
+  }
+  if (p.has_range())
+    s = "[" + graph::param_value_to_string(p.min) + ", " + graph::param_value_to_string(p.max) + "]";
+  if (!p.unit.empty()) s += (s.empty() ? "" : " ") + p.unit;
+  return s;
+}
+
+void print_text(const plugin::Technique& t, const graph::GraphDesc& g) {
+  std::printf("%s\n  %s\n  graph: %s\n", t.name.c_str(), t.description.c_str(), t.graph_file.c_str());
+  for (const graph::ParamDesc& p : g.parameters) {
+    std::printf("  --set %s=%s\n      %s, %s%s%s\n", p.name.c_str(), default_text(p).c_str(),
+                graph::param_type_name(p.type),
+                range_text(p).empty() ? "unbounded" : range_text(p).c_str(),
+                p.structural ? ", structural (recompiles)" : "",
+                p.description.empty() ? "" : (": " + p.description).c_str());
+  }
+  std::printf("\n");
+}
+
+int cmd_techniques(const std::vector<std::string>& argv) {
+  for (const std::string& a : argv)
+    if (a == "--help" || a == "-h") {
+      std::printf("%s", format_help("penumbra techniques [--json] [--plugin-dir DIR]",
+                                    "Lists every registered shadow technique with its description and\n"
+                                    "parameters (type, default, range, unit, description, structural).",
+                                    kSpecs).c_str());
+      return 0;
+    }
+  auto args = parse_args(argv, kSpecs);
+  if (!args) {
+    std::fprintf(stderr, "penumbra techniques: %s\n", args.error().to_string().c_str());
+    return 2;
+  }
+  if (!args->positionals.empty()) {
+    std::fprintf(stderr, "penumbra techniques: unexpected argument '%s'\n", args->positionals[0].c_str());
+    return 2;
+  }
+  plugin::TechniqueRegistry registry;
+  register_builtin_techniques(registry);
+  if (auto dir = args->get("plugin-dir"))
+    if (auto loaded = plugin::load_plugin_directory(*dir, registry); !loaded) {
+      std::fprintf(stderr, "penumbra techniques: %s\n", loaded.error().to_string().c_str());
+      return loaded.error().exit_code();
+    }
+
+  const bool json = args->has("json");
+  nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  for (const plugin::Technique& t : registry.all()) {
+    Result<graph::GraphDesc> g = plugin::load_technique_graph(t);
+    if (!g) {  // a registered technique whose graph does not load is a build/plugin bug
+      std::fprintf(stderr, "penumbra techniques: technique '%s': %s\n", t.name.c_str(),
+                   g.error().to_string().c_str());
+      return 1;
+    }
+    if (!json) {
+      print_text(t, *g);
+      continue;
+    }
+    nlohmann::ordered_json params = nlohmann::ordered_json::array();
+    for (const graph::ParamDesc& p : g->parameters) params.push_back(param_json(p));
+    all.push_back({{"name", t.name}, {"description", t.description}, {"graph_file", t.graph_file},
+                   {"parameters", params}});
+  }
+  if (json) std::printf("%s\n", all.dump(2).c_str());
+  return 0;
+}
+
+const CommandRegistration reg{"techniques", "list the shadow techniques and their parameters", cmd_techniques};
+
+}  // namespace
+}  // namespace penumbra::cli

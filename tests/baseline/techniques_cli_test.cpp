@@ -1,0 +1,108 @@
+// `penumbra techniques --json` lists every registered technique with every parameter of its
+// graph JSON, and `penumbra render` rejects bad --set values with exit code 2 and the valid
+// range. Runs the built CLI (PENUMBRA_CLI, a compile definition).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "plugin/technique.h"
+#include "techniques/builtin_techniques.h"
+
+namespace penumbra::test {
+namespace {
+
+struct CliRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+CliRun run_cli(const std::string& args) {
+  CliRun r;
+  const std::string cmd = std::string(PENUMBRA_CLI) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+TEST(TechniquesCommand, JsonListsEveryParameterOfEveryTechnique) {
+  CliRun r = run_cli("techniques --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  nlohmann::json list = nlohmann::json::parse(r.output, nullptr, false);
+  ASSERT_FALSE(list.is_discarded()) << r.output;
+  ASSERT_TRUE(list.is_array());
+
+  plugin::TechniqueRegistry registry;
+  register_builtin_techniques(registry);
+  ASSERT_EQ(list.size(), registry.all().size());
+  for (const plugin::Technique& t : registry.all()) {
+    SCOPED_TRACE(t.name);
+    auto it = std::find_if(list.begin(), list.end(), [&](const auto& j) { return j.value("name", "") == t.name; });
+    ASSERT_NE(it, list.end());
+    EXPECT_EQ((*it)["description"], t.description);
+    Result<graph::GraphDesc> g = plugin::load_technique_graph(t);
+    ASSERT_TRUE(g);
+    const nlohmann::json& params = (*it)["parameters"];
+    ASSERT_EQ(params.size(), g->parameters.size());
+    for (size_t i = 0; i < params.size(); ++i) {
+      const graph::ParamDesc& d = g->parameters[i];
+      const nlohmann::json& p = params[i];
+      SCOPED_TRACE(d.name);
+      EXPECT_EQ(p["name"], d.name);
+      EXPECT_EQ(p["type"], graph::param_type_name(d.type));
+      EXPECT_EQ(p["unit"], d.unit);
+      EXPECT_EQ(p["description"], d.description);
+      EXPECT_EQ(p["structural"], d.structural);
+      ASSERT_TRUE(p.contains("default"));
+      if (d.type == graph::ParamType::enumeration) {
+        EXPECT_EQ(p["options"], d.options);
+        EXPECT_EQ(p["default"], std::get<std::string>(d.default_value));
+      } else if (d.has_range()) {
+        EXPECT_DOUBLE_EQ(p["min"].get<double>(), d.min);
+        EXPECT_DOUBLE_EQ(p["max"].get<double>(), d.max);
+      } else {
+        EXPECT_TRUE(p["min"].is_null() && p["max"].is_null());
+      }
+    }
+  }
+  // The baselines are there with their documented parameters.
+  for (const char* name : {"hard", "pcf", "pcss"})
+    EXPECT_NE(std::find_if(list.begin(), list.end(), [&](const auto& j) { return j["name"] == name; }), list.end());
+}
+
+TEST(TechniquesCommand, TextListsParametersAndBadOptionsExitTwo) {
+  CliRun text = run_cli("techniques");
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("--set blocker_samples=16"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("int, [4, 64]"), std::string::npos) << text.output;
+  EXPECT_EQ(run_cli("techniques --bogus").exit_code, 2);
+  EXPECT_EQ(run_cli("techniques extra").exit_code, 2);
+  EXPECT_EQ(run_cli("techniques --help").exit_code, 0);
+}
+
+TEST(RenderCommand, BadSetValuesExitTwoWithTheValidRange) {
+  const std::string base = "render --context osmesa --scene ball --size 32x32 --mask /dev/null --technique ";
+  CliRun range = run_cli(base + "pcss --set blocker_samples=100");
+  EXPECT_EQ(range.exit_code, 2) << range.output;
+  EXPECT_NE(range.output.find("[4, 64]"), std::string::npos) << range.output;
+  CliRun unknown = run_cli(base + "pcf --set bogus=1");
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("box_size"), std::string::npos) << "lists the valid keys: " << unknown.output;
+  CliRun option = run_cli(base + "pcf --set kernel=gauss");
+  EXPECT_EQ(option.exit_code, 2) << option.output;
+  EXPECT_NE(option.output.find("box, vogel"), std::string::npos) << option.output;
+  CliRun even = run_cli(base + "pcf --set box_size=4");
+  EXPECT_EQ(even.exit_code, 2) << even.output;
+  EXPECT_NE(even.output.find("odd"), std::string::npos) << even.output;
+}
+
+}  // namespace
+}  // namespace penumbra::test
