@@ -37,6 +37,19 @@ float light_size_uv_at(float d) {
   return u_light_size_world / (max(d, 1e-4) * u_light_frustum_width);
 }
 
+// Unit direction from a receiver towards the light's centre.
+vec3 direction_to_light(vec3 world) {
+  return u_light_ortho == 1 ? -u_light_dir : normalize(u_light_pos - world);
+}
+
+// A receiver whose normal faces away from the light is in its own shadow: the ground truth
+// counts every light sample behind the receiver's tangent plane as blocked (scene/light.h,
+// reference/raytraced_reference.cpp), and no shadow-map bias classifies such a surface
+// reliably (its depth equals the occluding front face's, up to the object's thickness).
+bool faces_away_from_light(vec3 world, vec3 normal) {
+  return dot(normal, direction_to_light(world)) <= 0.0;
+}
+
 // Penumbra width in shadow-map UV at the receiver, for a receiver at light distance d_r and an
 // average blocker at d_b (world units, light_distance()). Fernando 2005, eq. 1 by similar
 // triangles, with the light model of scene/light.h:

@@ -5,6 +5,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "../common/shadow_common.glsl"
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_position;
+uniform sampler2D u_normal;
 uniform sampler2D u_shadow_map;   // raw depth, nearest
 uniform float u_depth_bias;       // window depth units
 
@@ -13,7 +14,9 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
   vec4 pos = texelFetch(u_position, p, 0);
   float lit = 1.0;
-  if (pos.w > 0.0) {
+  if (pos.w > 0.0 && faces_away_from_light(pos.xyz, texelFetch(u_normal, p, 0).xyz)) {
+    lit = 0.0;
+  } else if (pos.w > 0.0) {
     vec3 c = shadow_coord(pos.xyz);
     if (all(greaterThanEqual(c, vec3(0.0))) && all(lessThanEqual(c, vec3(1.0)))) {
       ivec2 size = textureSize(u_shadow_map, 0);

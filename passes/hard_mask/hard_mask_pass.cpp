@@ -15,6 +15,7 @@ class HardMaskPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.compute = "passes/hard_mask/hard_mask.comp.glsl"});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     set_shadow_uniforms(p.program(), ctx.frame());
@@ -31,10 +32,11 @@ exec::PassType hard_mask_pass_type() {
   return exec::PassDeclBuilder("hard_mask")
       .describe("Binary shadow mask: one nearest shadow-map comparison per pixel (compute)")
       .sampled("position", {Format::RGBA32F})
+      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
       .sampled("shadow_map", {Format::DEPTH32F})
       .imported("light", false)
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "mask"})
+      .same_size({"position", "normal", "mask"})
       .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
             "Subtracted from the receiver depth before the comparison")
       .build<HardMaskPass>();

@@ -42,5 +42,6 @@ void main() {
     lit = sum / float(u_samples);
 #endif
   }
+  if (self_shadowed(u_position, u_normal, p)) lit = 0.0;
   imageStore(u_mask, p, vec4(lit));
 }

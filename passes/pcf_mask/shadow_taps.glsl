@@ -57,6 +57,12 @@ vec2 receiver_depth_gradient(sampler2D positions, ivec2 pixel, vec3 world, vec3 
 }
 
 // False for background pixels and for pixels outside the shadow-map frustum (those are lit).
+// True for a receiver that faces away from the light (visibility 0, shadow_common.glsl).
+bool self_shadowed(sampler2D positions, sampler2D normals, ivec2 pixel) {
+  vec4 pos = texelFetch(positions, pixel, 0);
+  return pos.w > 0.0 && faces_away_from_light(pos.xyz, texelFetch(normals, pixel, 0).xyz);
+}
+
 bool shadow_receiver(sampler2D positions, sampler2D normals, ivec2 pixel, out Receiver r) {
   vec4 pos = texelFetch(positions, pixel, 0);
   if (pos.w <= 0.0) return false;

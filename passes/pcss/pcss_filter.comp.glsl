@@ -41,5 +41,6 @@ void main() {
       sum += pcf_tap(u_shadow_map, r, vogel_disk_sample(i, u_samples, phi) * radius, u_depth_bias);
     lit = sum / float(u_samples);
   }
+  if (self_shadowed(u_position, u_normal, p)) lit = 0.0;
   imageStore(u_mask, p, vec4(lit));
 }

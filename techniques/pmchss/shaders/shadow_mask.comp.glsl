@@ -35,7 +35,7 @@ float shadow_at(ivec2 pixel, ivec2 screen, bool checker) {
   if (pos.w <= 0.0) return 1.0;  // background: lit, by the shadow_mask contract
   // A receiver facing away from the light is in its own shadow (closed geometry); its depth is
   // too close to the occluding front face for any bias to classify it reliably.
-  if (dot(texelFetch(u_normal, pixel, 0).xyz, u_light_dir) >= 0.0) return 0.0;
+  if (faces_away_from_light(pos.xyz, texelFetch(u_normal, pixel, 0).xyz)) return 0.0;
   vec3 c = shadow_coord(pos.xyz);
   if (!pmchss_in_shadow_frustum(c)) return 1.0;
   vec2 dz_duv = receiver_plane_gradient(u_position, pixel, c, vec3(0.0));
