@@ -85,6 +85,11 @@ float pmchss_filter(sampler2DShadow shadow_cmp, vec2 uv, float z_window, vec2 dz
                     float penumbra, float phi) {
   float lit = 0.0;
   float radius = penumbra * u_shadow_filter_max_size;
+  // A kernel narrower than a texel puts all FILTER_SAMPLES taps on the same 2x2 footprint:
+  // one tap gives the same value (this is where the paper's penumbra-mask speed-up comes from
+  // on a GPU whose cache already holds the whole shadow map: contact and fully lit pixels).
+  if (radius < 0.5 * u_shadow_texel)
+    return texture(shadow_cmp, vec3(uv, pmchss_receiver_depth(z_window, dz_duv, vec2(0.0))));
   for (int i = 0; i < FILTER_SAMPLES; ++i) {
     vec2 o = radius * vogel_disk_sample(i, FILTER_SAMPLES, phi);
     lit += texture(shadow_cmp, vec3(uv + o, pmchss_receiver_depth(z_window, dz_duv, o)));
