@@ -66,7 +66,11 @@ void post_call_check(void* ret, const char* name, GLADapiproc proc, int len_args
 void install_debug_output() {
   if (GLAD_GL_KHR_debug || GLAD_GL_VERSION_4_3) {
     glEnable(GL_DEBUG_OUTPUT);
+#ifdef PENUMBRA_GL_STRICT
+    // Synchronous messages name the offending call in a debugger, but make drivers serialise
+    // their work: strict (dev, asan) builds only.
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+#endif
     glDebugMessageCallback(on_debug_message, nullptr);
   }
 #ifdef PENUMBRA_GL_STRICT

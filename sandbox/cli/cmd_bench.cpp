@@ -132,7 +132,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
   }
 
   int code = 0;
-  auto ctx = open_context(*args, "bench", &code, 16, 16);
+  auto ctx = open_context(*args, "bench", &code, 16, 16, /*debug_output=*/false);
   if (!ctx) return code;
   exec::PassLibrary library = make_pass_library(registry);
   BenchReport report{ctx->info().backend, ctx->info().renderer, "", {}};

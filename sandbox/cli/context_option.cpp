@@ -5,8 +5,9 @@
 namespace penumbra::cli {
 
 std::unique_ptr<gl::Context> open_context(const ParsedArgs& args, const std::string& command,
-                                          int* exit_code, int width, int height) {
+                                          int* exit_code, int width, int height, bool debug_output) {
   gl::ContextOptions options;
+  options.debug_output = debug_output;
   options.width = width;
   options.height = height;
   options.visible = false;
