@@ -14,7 +14,7 @@
 //       ctx.bind_sampled(p, "src", "input");           // texture unit + uniform
 //       ctx.bind_image(0, "output", GL_WRITE_ONLY);     // image unit 0
 //       p.program().set("strength", ctx.real("strength"));
-//       ctx.dispatch_over(p, ctx.texture("output").width(), ctx.texture("output").height());
+//       ctx.dispatch_over(p, ctx.texture("output"));      // one thread per texel
 //       return {};
 //     }
 //   };
@@ -70,6 +70,9 @@ class PassContext {
   void bind_image(GLuint unit, std::string_view slot, GLenum access, int level = 0) const;
   // One thread per texel of `target`, rounded up to the program's local size.
   void dispatch_over(const gl::ShaderProgram& p, int width, int height) const;
+  void dispatch_over(const gl::ShaderProgram& p, const gl::Texture& target) const {
+    dispatch_over(p, target.width(), target.height());
+  }
 
  private:
   const graph::PlannedBinding* find(std::string_view slot) const;

@@ -181,7 +181,7 @@ const std::vector<BuiltinScene>& registry() {
        [](SceneBuilder& b, const Params& p) {
          b.add(ground_mesh(16, 10, {0, 0, 0}), b.material("floor", glm::vec3(0.72f, 0.7f, 0.66f)), glm::mat4(1.0f));
          add_colonnade(b, p, glm::mat4(1.0f));
-         b.scene.camera = Camera::look_at({-7.0f, 3.2f, 3.2f}, {0.5f, 0.6f, 0.0f}, glm::radians(60.0f));
+         b.scene.camera = Camera::look_at({-9.0f, 4.0f, 7.0f}, {0.5f, 0.8f, -0.5f}, glm::radians(55.0f));
          b.scene.light = sky_light(p, {0, 0, 0});
        }},
       {"showcase",

@@ -2,15 +2,13 @@
 // See README.md for how to make it a built-in or a shared-library plugin.
 #include "techniques/_template/template_technique.h"
 
+#include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::template_technique {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 class TemplateMaskPass final : public exec::PassImpl {
  public:
@@ -23,8 +21,7 @@ class TemplateMaskPass final : public exec::PassImpl {
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);       // layout(binding = 0) in the shader
     passes::set_shadow_uniforms(p.program(), ctx.frame());  // shadow_common.glsl's uniforms
     p.program().set("u_strength", ctx.real("strength"));    // live value of "$shadow_strength"
-    gl::Texture& mask = ctx.texture("mask");
-    ctx.dispatch_over(p, mask.width(), mask.height());
+    ctx.dispatch_over(p, ctx.texture("mask"));     // one thread per mask texel
     return {};
   }
 };
@@ -32,20 +29,16 @@ class TemplateMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType template_mask_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "template_mask";
-  d.description = "Template: hard shadow test scaled by a strength (compute)";
-  d.slots = {
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
-      {"mask", Access::write, SlotKind::texture, {Format::R16F}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"position", "mask"}};
-  graph::ParamDesc strength{.name = "strength", .type = graph::ParamType::real, .default_value = 1.0,
-                            .min = 0.0, .max = 1.0};
-  strength.description = "0 = no shadow, 1 = full hard shadow";
-  d.params = {strength};
-  return {d, [] { return std::make_unique<TemplateMaskPass>(); }};
+  // Slots and parameters, declared once; the compiler validates graphs against this and plans
+  // the barriers from each slot's usage (image_out then sampled = a texture-fetch barrier).
+  return exec::PassDeclBuilder("template_mask")
+      .describe("Template: hard shadow test scaled by a strength (compute)")
+      .sampled("position", {Format::RGBA32F})
+      .sampled("shadow_map", {Format::DEPTH32F})
+      .image_out("mask", {Format::R16F})
+      .same_size({"position", "mask"})
+      .real("strength", 1.0, 0.0, 1.0, "", "0 = no shadow, 1 = full hard shadow")
+      .build<TemplateMaskPass>();
 }
 
 void register_technique(plugin::TechniqueRegistry& registry) {
