@@ -1,6 +1,7 @@
 #include "cli/args.h"
 
 #include <charconv>
+#include <cstdio>
 
 namespace penumbra::cli {
 
@@ -59,6 +60,17 @@ std::string format_help(const std::string& usage, const std::string& description
   }
   out += "  --help                    show this help\n";
   return out;
+}
+
+bool help_requested(const std::vector<std::string>& args) {
+  for (const std::string& a : args)
+    if (a == "--help" || a == "-h") return true;
+  return false;
+}
+
+int print_help(const std::string& usage, const std::string& description, const std::vector<OptionSpec>& specs) {
+  std::fputs(format_help(usage, description, specs).c_str(), stdout);
+  return 0;
 }
 
 Result<int> parse_int(const std::string& option, const std::string& text, int lo, int hi) {

@@ -29,6 +29,10 @@ struct ParsedArgs {
 Result<ParsedArgs> parse_args(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs);
 std::string format_help(const std::string& usage, const std::string& description,
                         const std::vector<OptionSpec>& specs);
+// --help or -h anywhere on the line (before any parsing, so a bad option does not hide help).
+bool help_requested(const std::vector<std::string>& args);
+// Prints format_help() to stdout; returns exit code 0.
+int print_help(const std::string& usage, const std::string& description, const std::vector<OptionSpec>& specs);
 
 // "640x480" -> {640, 480}; errors name the option and the expected form.
 Result<std::pair<int, int>> parse_size(const std::string& option, const std::string& text, int max = 16384);

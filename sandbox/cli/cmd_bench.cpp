@@ -107,16 +107,13 @@ Status write_json(const std::string& path, const BenchReport& report) {
 }
 
 int cmd_bench(const std::vector<std::string>& argv) {
-  for (const std::string& a : argv)
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", format_help("penumbra bench [--techniques a,b] [--scenes s1,s2] [--size WxH] [--shadow-size N] "
+  if (help_requested(argv))
+    return print_help("penumbra bench [--techniques a,b] [--scenes s1,s2] [--size WxH] [--shadow-size N] "
                                     "[--frames N] [--warmup N] [--set k=v]... [--json OUT.json]",
                                     "Renders warmup + N frames of each technique on each scene and prints the\n"
                                     "median time of every pass and their sum. On a GPU (EGL) passes are timed with\n"
                                     "timestamp queries; on llvmpipe with glFinish + a CPU clock.",
-                                    kSpecs).c_str());
-      return 0;
-    }
+                                    kSpecs);
   auto args = parse_args(argv, kSpecs);
   if (!args) return fail(args.error());
   plugin::TechniqueRegistry registry;

@@ -193,18 +193,15 @@ Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::
 }
 
 int cmd_eval(const std::vector<std::string>& argv) {
-  for (const std::string& a : argv)
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", format_help("penumbra eval --scene NAME|FILE --techniques a,b,c [--reference raytraced|raster] "
+  if (help_requested(argv))
+    return print_help("penumbra eval --scene NAME|FILE --techniques a,b,c [--reference raytraced|raster] "
                                     "[--size WxH] [--shadow-size N] [--rays M] [--samples N] [--json OUT.json] "
                                     "[--heatmaps DIR] [--set k=v]...",
                                     "Renders a ground-truth reference once, then each technique on the same frame,\n"
                                     "and compares shadow masks over receiver pixels (RMSE, RMSE in the penumbra\n"
                                     "0.02 < ref < 0.98, MAE, max error, SSIM) and times the technique's passes\n"
                                     "(median ms). See docs/evaluation.md.",
-                                    kSpecs).c_str());
-      return 0;
-    }
+                                    kSpecs);
   auto args = parse_args(argv, kSpecs);
   if (!args) return fail(args.error());
   plugin::TechniqueRegistry registry;

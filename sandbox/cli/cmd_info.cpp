@@ -9,14 +9,11 @@ namespace {
 
 int cmd_info(const std::vector<std::string>& argv) {
   const std::vector<OptionSpec> specs = {context_option_spec()};
-  for (const std::string& a : argv)
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", format_help("penumbra info [--context glfw|osmesa|egl]",
+  if (help_requested(argv))
+    return print_help("penumbra info [--context glfw|osmesa|egl]",
                                     "Creates a GL 4.5 core context and prints the backend, GL version,\n"
                                     "renderer, GLSL version and the limits the passes depend on.",
-                                    specs).c_str());
-      return 0;
-    }
+                                    specs);
   auto args = parse_args(argv, specs);
   if (!args) {
     std::fprintf(stderr, "penumbra info: %s\n", args.error().to_string().c_str());

@@ -74,14 +74,11 @@ Status write_outputs(plugin::TechniqueSession& session, const std::string& out, 
 }
 
 int cmd_render(const std::vector<std::string>& argv) {
-  for (const std::string& a : argv)
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", format_help("penumbra render --scene NAME|FILE [--technique T] [--set k=v]... "
+  if (help_requested(argv))
+    return print_help("penumbra render --scene NAME|FILE [--technique T] [--set k=v]... "
                                     "[--size WxH] [--shadow-size N] [--out OUT.png] [--mask MASK.png]",
                                     "Renders one frame of a shadow technique headless and writes PNGs.",
-                                    kSpecs).c_str());
-      return 0;
-    }
+                                    kSpecs);
   auto args = parse_args(argv, kSpecs);
   if (!args) return fail(args.error());
   if (!args->positionals.empty()) return fail(make_error("unexpected argument '" + args->positionals[0] + "'"));

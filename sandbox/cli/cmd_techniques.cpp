@@ -74,14 +74,11 @@ void print_text(const plugin::Technique& t, const graph::GraphDesc& g) {
 }
 
 int cmd_techniques(const std::vector<std::string>& argv) {
-  for (const std::string& a : argv)
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", format_help("penumbra techniques [--json] [--plugin-dir DIR]",
+  if (help_requested(argv))
+    return print_help("penumbra techniques [--json] [--plugin-dir DIR]",
                                     "Lists every registered shadow technique with its description and\n"
                                     "parameters (type, default, range, unit, description, structural).",
-                                    kSpecs).c_str());
-      return 0;
-    }
+                                    kSpecs);
   auto args = parse_args(argv, kSpecs);
   if (!args) {
     std::fprintf(stderr, "penumbra techniques: %s\n", args.error().to_string().c_str());
