@@ -58,18 +58,20 @@ class PassDeclBuilder {
 
   PassDeclBuilder& real(std::string name, double def, double min, double max, std::string unit,
                         std::string description) {
-    return param(std::move(name), graph::ParamType::real, def, min, max, std::move(unit), std::move(description));
+    return param(graph::real_param(std::move(name), def, min, max, std::move(unit), std::move(description)));
   }
   PassDeclBuilder& integer(std::string name, int def, int min, int max, std::string unit, std::string description) {
-    return param(std::move(name), graph::ParamType::integer, def, min, max, std::move(unit), std::move(description));
+    return param(graph::int_param(std::move(name), def, min, max, std::move(unit), std::move(description)));
   }
   PassDeclBuilder& boolean(std::string name, bool def, std::string description) {
-    return param(std::move(name), graph::ParamType::boolean, def, 0, 0, "", std::move(description));
+    return param(graph::bool_param(std::move(name), def, std::move(description)));
   }
   PassDeclBuilder& enumeration(std::string name, std::string def, std::vector<std::string> options,
                                std::string description) {
-    param(std::move(name), graph::ParamType::enumeration, std::move(def), 0, 0, "", std::move(description));
-    decl_.params.back().options = std::move(options);
+    return param(graph::enum_param(std::move(name), std::move(def), std::move(options), std::move(description)));
+  }
+  PassDeclBuilder& param(graph::ParamDesc desc) {
+    decl_.params.push_back(std::move(desc));
     return *this;
   }
 
@@ -94,20 +96,6 @@ class PassDeclBuilder {
     decl_.slots.push_back({std::move(slot), access, graph::SlotKind::texture, std::move(formats), usage, required});
     return *this;
   }
-  PassDeclBuilder& param(std::string name, graph::ParamType type, graph::ParamValue def, double min, double max,
-                         std::string unit, std::string description) {
-    graph::ParamDesc d;
-    d.name = std::move(name);
-    d.type = type;
-    d.default_value = std::move(def);
-    d.min = min;
-    d.max = max;
-    d.unit = std::move(unit);
-    d.description = std::move(description);
-    decl_.params.push_back(std::move(d));
-    return *this;
-  }
-
   graph::PassTypeDecl decl_;
 };
 

@@ -218,4 +218,44 @@ void ParameterSet::reset_all() {
   for (const auto& d : descs_) values_.push_back(d.default_value);
 }
 
+ParamDesc real_param(std::string name, double def, double min, double max, std::string unit,
+                     std::string description) {
+  ParamDesc d;
+  d.name = std::move(name);
+  d.type = ParamType::real;
+  d.default_value = def;
+  d.min = min;
+  d.max = max;
+  d.unit = std::move(unit);
+  d.description = std::move(description);
+  return d;
+}
+
+ParamDesc int_param(std::string name, int def, int min, int max, std::string unit, std::string description) {
+  ParamDesc d = real_param(std::move(name), 0.0, min, max, std::move(unit), std::move(description));
+  d.type = ParamType::integer;
+  d.default_value = def;
+  return d;
+}
+
+ParamDesc bool_param(std::string name, bool def, std::string description) {
+  ParamDesc d;
+  d.name = std::move(name);
+  d.type = ParamType::boolean;
+  d.default_value = def;
+  d.description = std::move(description);
+  return d;
+}
+
+ParamDesc enum_param(std::string name, std::string def, std::vector<std::string> options,
+                     std::string description) {
+  ParamDesc d;
+  d.name = std::move(name);
+  d.type = ParamType::enumeration;
+  d.default_value = std::move(def);
+  d.options = std::move(options);
+  d.description = std::move(description);
+  return d;
+}
+
 }  // namespace penumbra::graph

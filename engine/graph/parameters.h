@@ -52,6 +52,14 @@ Status check_param_value(const ParamDesc& desc, const ParamValue& value);
 // Parses text as a value of desc.type ("true"/"false"/"1"/"0", integer, real, option name).
 Result<ParamValue> parse_param_value(const ParamDesc& desc, std::string_view text);
 
+// Short constructors for declarations in C++ (pass types; techniques describe theirs in JSON).
+ParamDesc real_param(std::string name, double def, double min, double max, std::string unit,
+                     std::string description);
+ParamDesc int_param(std::string name, int def, int min, int max, std::string unit, std::string description);
+ParamDesc bool_param(std::string name, bool def, std::string description);
+ParamDesc enum_param(std::string name, std::string def, std::vector<std::string> options,
+                     std::string description);
+
 class ParameterSet {
  public:
   ParameterSet() = default;

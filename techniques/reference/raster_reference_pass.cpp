@@ -8,12 +8,15 @@
 #include "exec/gpu_scene.h"
 #include "gl/framebuffer.h"
 #include "reference_frame_key.h"
-#include "reference_params.h"
+#include "graph/parameters.h"
 #include "reference_progress.h"
 #include "sample_view.h"
 
 namespace penumbra::reference {
 namespace {
+
+using graph::int_param;
+using graph::real_param;
 
 using graph::Access;
 using graph::Format;

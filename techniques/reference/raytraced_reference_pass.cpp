@@ -10,11 +10,14 @@
 #include "exec/gpu_scene.h"
 #include "raytraced_reference.h"
 #include "reference_frame_key.h"
-#include "reference_params.h"
+#include "graph/parameters.h"
 #include "reference_progress.h"
 
 namespace penumbra::reference {
 namespace {
+
+using graph::int_param;
+using graph::real_param;
 
 using graph::Access;
 using graph::Format;

@@ -11,37 +11,6 @@ namespace penumbra::pmchss {
 using graph::ParamDesc;
 using graph::ParamType;
 
-ParamDesc real_param(const char* name, double def, double min, double max, const char* unit,
-                     const char* description) {
-  ParamDesc d{.name = name, .type = ParamType::real, .default_value = def, .min = min, .max = max};
-  d.unit = unit;
-  d.description = description;
-  return d;
-}
-
-ParamDesc int_param(const char* name, int def, int min, int max, const char* unit,
-                    const char* description) {
-  ParamDesc d{.name = name, .type = ParamType::integer, .default_value = def, .min = double(min),
-              .max = double(max)};
-  d.unit = unit;
-  d.description = description;
-  return d;
-}
-
-ParamDesc bool_param(const char* name, bool def, const char* description) {
-  ParamDesc d{.name = name, .type = ParamType::boolean, .default_value = def};
-  d.description = description;
-  return d;
-}
-
-ParamDesc enum_param(const char* name, const char* def, std::vector<std::string> options,
-                     const char* description) {
-  ParamDesc d{.name = name, .type = ParamType::enumeration, .default_value = std::string(def)};
-  d.description = description;
-  d.options = std::move(options);
-  return d;
-}
-
 std::vector<ParamDesc> penumbra_params() {
   // Defaults from Sterna 2018 and its demo: 0.002 UV max kernel radius, 1.2 search scale
   // (section 2.2), k = 80 (Listing 4).

@@ -13,13 +13,10 @@ namespace penumbra::pmchss {
 
 // Declaration helpers (the graph JSON holds the user-facing descriptions; a pass type declares
 // the slots' parameter types and ranges so a bad binding is a compile error).
-graph::ParamDesc real_param(const char* name, double def, double min, double max, const char* unit,
-                            const char* description);
-graph::ParamDesc int_param(const char* name, int def, int min, int max, const char* unit,
-                           const char* description);
-graph::ParamDesc bool_param(const char* name, bool def, const char* description);
-graph::ParamDesc enum_param(const char* name, const char* def, std::vector<std::string> options,
-                            const char* description);
+using graph::bool_param;
+using graph::enum_param;
+using graph::int_param;
+using graph::real_param;
 
 // Parameters every pass that searches blockers or maps a penumbra takes: shadow_filter_max_size,
 // penumbra_kernel_scale, penumbra_mapping, k, depth_bias, receiver_plane_bias.
