@@ -3,6 +3,7 @@
 // technique and every parameter's min, max and default is visited with no test change; every
 // screenshot is read back (stb_image) and must not be blank. A missing xvfb-run FAILS the test.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -34,9 +35,12 @@ RunResult run(const std::string& command) {
   return r;
 }
 
+// ctest runs these tests in parallel and `xvfb-run -a` alone races for the same display
+// number ("Xvfb failed to start"): start each process's search at its own number.
 std::string xvfb() {
   if (run("command -v xvfb-run").exit_code != 0) return "";
-  return "xvfb-run -a -s \"-screen 0 1280x1024x24\" ";
+  const int first_display = 100 + static_cast<int>(::getpid() % 800) * 8;
+  return "xvfb-run -a -n " + std::to_string(first_display) + " -s \"-screen 0 1280x1024x24\" ";
 }
 
 fs::path fresh_dir(const std::string& name) {
