@@ -43,6 +43,18 @@ std::string xvfb() {
   return "xvfb-run -a -n " + std::to_string(first_display) + " -s \"-screen 0 1280x1024x24\" ";
 }
 
+// Runs `command` in the X server of `xvfb` and returns the COMMAND's exit code: xvfb-run's own
+// status can be 5 when its temporary-directory clean-up races with a parallel xvfb-run.
+RunResult run_in_xvfb(const std::string& xvfb_prefix, const std::string& command) {
+  RunResult r = run(xvfb_prefix + "sh -c '" + command + "; echo penumbra_exit=$?'");
+  const std::string marker = "penumbra_exit=";
+  if (auto at = r.output.rfind(marker); at != std::string::npos) {
+    r.exit_code = std::atoi(r.output.c_str() + at + marker.size());
+    r.output.erase(at);
+  }
+  return r;
+}
+
 fs::path fresh_dir(const std::string& name) {
   fs::path d = fs::temp_directory_path() / ("penumbra_sandbox_xvfb_" + name);
   fs::remove_all(d);
@@ -68,7 +80,7 @@ TEST(SandboxXvfb, ExhaustiveScriptOverEveryTechnique) {
                     " --screenshot-dir " + dir.string() + " --size 400x240 --shadow-size 512");
   ASSERT_EQ(w.exit_code, 0) << w.output;
 
-  RunResult r = run(x + SANDBOX_TEST_HOST + " --scene showcase --size 400x240 --script " + script.string());
+  RunResult r = run_in_xvfb(x, std::string(SANDBOX_TEST_HOST) + " --scene showcase --size 400x240 --script " + script.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("GL error"), std::string::npos) << r.output;
 
@@ -96,7 +108,7 @@ TEST(SandboxXvfb, ShippedBinaryScreenshotIsNotBlank) {
   const std::string x = xvfb();
   ASSERT_FALSE(x.empty()) << "xvfb-run is not installed: run scripts/setup.sh (installs xvfb)";
   fs::path dir = fresh_dir("shipped");
-  RunResult r = run(x + SANDBOX_BINARY + " --scene ball --size 480x320 --shadow-size 512 --screenshot " +
+  RunResult r = run_in_xvfb(x, std::string(SANDBOX_BINARY) + " --scene ball --size 480x320 --shadow-size 512 --screenshot " +
                     (dir / "shot.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   expect_not_blank(dir / "shot.png");
@@ -124,7 +136,7 @@ TEST(SandboxXvfb, RuntimeStepErrorNamesTheStep) {
   ASSERT_FALSE(x.empty()) << "xvfb-run is not installed: run scripts/setup.sh (installs xvfb)";
   fs::path dir = fresh_dir("runtime");
   std::ofstream(dir / "s.json") << R"([{"wait": 1}, {"technique": "no_such_technique"}])";
-  RunResult r = run(x + SANDBOX_TEST_HOST + " --size 160x120 --script " + (dir / "s.json").string());
+  RunResult r = run_in_xvfb(x, std::string(SANDBOX_TEST_HOST) + " --size 160x120 --script " + (dir / "s.json").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("script step 1 (technique)"), std::string::npos) << r.output;
   fs::remove_all(dir);
