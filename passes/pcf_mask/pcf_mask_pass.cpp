@@ -5,17 +5,13 @@
 
 #include <optional>
 
+#include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::ParamDesc;
-using graph::ParamType;
-using graph::SlotKind;
-using graph::Usage;
 
 constexpr const char* kShader = "passes/pcf_mask/pcf_mask.comp.glsl";
 
@@ -54,33 +50,22 @@ class PcfMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType pcf_mask_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pcf_mask";
-  d.description = "Percentage-closer filtering with a box or rotated Vogel-disk kernel (compute)";
-  d.slots = {
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"normal", Access::read, SlotKind::texture, {Format::RGBA16F, Format::RGBA32F}, Usage::sampled, true},
-      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, false},
-      {"mask", Access::write, SlotKind::texture, {Format::R16F}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"position", "normal", "mask"}};
-  ParamDesc kernel{.name = "kernel", .type = ParamType::enumeration, .default_value = std::string("box")};
-  kernel.options = {"box", "vogel"};
-  kernel.description = "box: N x N taps one texel apart; vogel: rotated Vogel disk";
-  ParamDesc box{.name = "box_size", .type = ParamType::integer, .default_value = 5, .min = 1, .max = 15};
-  box.unit = "texels";
-  box.description = "Box kernel width N (odd)";
-  ParamDesc samples{.name = "samples", .type = ParamType::integer, .default_value = 16, .min = 1, .max = 64};
-  samples.description = "Vogel-disk taps";
-  ParamDesc radius{.name = "radius", .type = ParamType::real, .default_value = 2.5, .min = 0.0, .max = 64.0};
-  radius.unit = "texels";
-  radius.description = "Vogel-disk radius";
-  ParamDesc bias{.name = "depth_bias", .type = ParamType::real, .default_value = 0.0002, .min = 0.0, .max = 0.05};
-  bias.unit = "window depth";
-  bias.description = "Constant bias subtracted from the receiver-plane depth of every tap";
-  d.params = {kernel, box, samples, radius, bias};
-  return {d, [] { return std::make_unique<PcfMaskPass>(); }};
+  return exec::PassDeclBuilder("pcf_mask")
+      .describe("Percentage-closer filtering with a box or rotated Vogel-disk kernel (compute)")
+      .sampled("position", {Format::RGBA32F})
+      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
+      .sampled("shadow_map", {Format::DEPTH32F})
+      .imported("light", false)
+      .image_out("mask", {Format::R16F})
+      .same_size({"position", "normal", "mask"})
+      .enumeration("kernel", "box", {"box", "vogel"},
+                   "box: N x N taps one texel apart; vogel: rotated Vogel disk")
+      .integer("box_size", 5, 1, 15, "texels", "Box kernel width N (odd)")
+      .integer("samples", 16, 1, 64, "", "Vogel-disk taps")
+      .real("radius", 2.5, 0.0, 64.0, "texels", "Vogel-disk radius")
+      .real("depth_bias", 0.0002, 0.0, 0.05, "window depth",
+            "Constant bias subtracted from the receiver-plane depth of every tap")
+      .build<PcfMaskPass>();
 }
 
 }  // namespace penumbra::passes

@@ -3,15 +3,12 @@
 
 #include <optional>
 
+#include "exec/pass_decl_builder.h"
+
 namespace penumbra::passes {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::ParamDesc;
-using graph::ParamType;
-using graph::SlotKind;
-using graph::Usage;
 
 class VisualizePass final : public exec::PassImpl {
  public:
@@ -42,31 +39,18 @@ class VisualizePass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType visualize_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "visualize";
-  d.description = "Single-channel texture to RGBA8 with a grey or heat colour map over [min, max] (compute)";
-  d.slots = {
-      {"input", Access::read, SlotKind::texture, {Format::R8, Format::R16F, Format::R32F, Format::DEPTH32F},
-       Usage::sampled, true},
-      {"output", Access::write, SlotKind::texture, {Format::RGBA8}, Usage::image_store, true},
-  };
-  ParamDesc colormap{.name = "colormap", .type = ParamType::enumeration, .default_value = std::string("grey")};
-  colormap.options = {"grey", "heat"};
-  colormap.description = "grey: black at min, white at max; heat: blue, cyan, green, yellow, red";
-  ParamDesc lo{.name = "min", .type = ParamType::real, .default_value = 0.0};
-  lo.description = "Value shown as the colour map's start (input units)";
-  ParamDesc hi{.name = "max", .type = ParamType::real, .default_value = 1.0};
-  hi.description = "Value shown as the colour map's end (input units)";
-  ParamDesc linear{.name = "linearize_depth", .type = ParamType::boolean, .default_value = false};
-  linear.description = "DEPTH32F input: convert perspective window depth to distance with near/far";
-  ParamDesc near_plane{.name = "near", .type = ParamType::real, .default_value = 0.1, .min = 1e-6, .max = 1e6};
-  near_plane.unit = "world units";
-  near_plane.description = "Near plane distance for linearize_depth";
-  ParamDesc far_plane{.name = "far", .type = ParamType::real, .default_value = 100.0, .min = 1e-6, .max = 1e6};
-  far_plane.unit = "world units";
-  far_plane.description = "Far plane distance for linearize_depth";
-  d.params = {colormap, lo, hi, linear, near_plane, far_plane};
-  return {d, [] { return std::make_unique<VisualizePass>(); }};
+  return exec::PassDeclBuilder("visualize")
+      .describe("Single-channel texture to RGBA8 with a grey or heat colour map over [min, max] (compute)")
+      .sampled("input", {Format::R8, Format::R16F, Format::R32F, Format::DEPTH32F})
+      .image_out("output", {Format::RGBA8})
+      .enumeration("colormap", "grey", {"grey", "heat"},
+                   "grey: black at min, white at max; heat: blue, cyan, green, yellow, red")
+      .real("min", 0.0, 0.0, 0.0, "", "Value shown as the colour map's start (input units)")
+      .real("max", 1.0, 0.0, 0.0, "", "Value shown as the colour map's end (input units)")
+      .boolean("linearize_depth", false, "DEPTH32F input: convert perspective window depth to distance with near/far")
+      .real("near", 0.1, 1e-6, 1e6, "world units", "Near plane distance for linearize_depth")
+      .real("far", 100.0, 1e-6, 1e6, "world units", "Far plane distance for linearize_depth")
+      .build<VisualizePass>();
 }
 
 }  // namespace penumbra::passes
