@@ -8,6 +8,7 @@
 #include "exec/gpu_scene.h"
 #include "gl/framebuffer.h"
 #include "reference_frame_key.h"
+#include "exec/pass_decl_builder.h"
 #include "graph/parameters.h"
 #include "reference_progress.h"
 #include "sample_view.h"
@@ -18,10 +19,7 @@ namespace {
 using graph::int_param;
 using graph::real_param;
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 // Texture unit given to GpuScene::draw for base-colour textures (alpha-masked casters), above
 // the units the compute programs use.
@@ -139,29 +137,25 @@ class RasterReferencePass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType raster_reference_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "reference_raster";
-  d.description = "Ground truth: accumulated hard visibility of shadow maps from stratified light points (progressive)";
-  d.slots = {
-      {"scene", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"camera", Access::read, SlotKind::imported, {}, Usage::imported, false},
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"normal", Access::read, SlotKind::texture, {}, Usage::sampled, true},
-      {"accumulation", Access::read_write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
-      {"mask", Access::write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"position", "normal", "accumulation", "mask"}};
-  d.params = {
-      int_param("samples", 1024, 1, 65536, "", "Light sample points N (one shadow map each)"),
-      int_param("map_size", 4096, 64, 16384, "texels", "Resolution of each sample point's depth map"),
-      int_param("maps_per_frame", 16, 1, 65536, "", "Shadow maps accumulated per frame (progressive)"),
-      int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the ray tracer's)"),
-      real_param("receiver_bias", 1.0, 0.0, 16.0, "texels", "Receiver moved towards the sample point by this many texel footprints x tan(incidence)"),
-      real_param("slope_bias", 0.0, 0.0, 10.0, "", "glPolygonOffset factor of the sample maps"),
-      real_param("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "glPolygonOffset units of the sample maps"),
-  };
-  return {d, [] { return std::make_unique<RasterReferencePass>(); }};
+  return exec::PassDeclBuilder("reference_raster")
+      .describe("Ground truth: accumulated hard visibility of shadow maps from stratified light points (progressive)")
+      .imported("scene")
+      .imported("light")
+      .imported("camera", false)
+      .sampled("position", {Format::RGBA32F})
+      .sampled("normal")
+      .image_inout("accumulation", {Format::R32F})
+      .image_out("mask", {Format::R32F})
+      .same_size({"position", "normal", "accumulation", "mask"})
+      .param(int_param("samples", 1024, 1, 65536, "", "Light sample points N (one shadow map each)"))
+      .param(int_param("map_size", 4096, 64, 16384, "texels", "Resolution of each sample point's depth map"))
+      .param(int_param("maps_per_frame", 16, 1, 65536, "", "Shadow maps accumulated per frame (progressive)"))
+      .param(int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the ray tracer's)"))
+      .param(real_param("receiver_bias", 1.0, 0.0, 16.0, "texels",
+                        "Receiver moved towards the sample point by this many texel footprints x tan(incidence)"))
+      .param(real_param("slope_bias", 0.0, 0.0, 10.0, "", "glPolygonOffset factor of the sample maps"))
+      .param(real_param("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "glPolygonOffset units of the sample maps"))
+      .build<RasterReferencePass>();
 }
 
 }  // namespace penumbra::reference

@@ -10,6 +10,7 @@
 #include "exec/gpu_scene.h"
 #include "raytraced_reference.h"
 #include "reference_frame_key.h"
+#include "exec/pass_decl_builder.h"
 #include "graph/parameters.h"
 #include "reference_progress.h"
 
@@ -17,12 +18,8 @@ namespace penumbra::reference {
 namespace {
 
 using graph::int_param;
-using graph::real_param;
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 // One Embree scene per GpuScene, shared by every pass instance (a recompile or a switch of
 // method must not rebuild the BVH). Keyed like the reset rule: pointer + triangles + bounds.
@@ -127,25 +124,20 @@ class RaytracedReferencePass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType raytraced_reference_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "reference_raytraced";
-  d.description = "Ground truth: exact area-light visibility ray-traced on the CPU (Embree), traced when inputs change";
-  d.slots = {
-      {"scene", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, true},
-      {"camera", Access::read, SlotKind::imported, {}, Usage::imported, false},
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"normal", Access::read, SlotKind::texture, {}, Usage::sampled, true},
-      // Written by a texture upload (glTextureSubImage2D); declared as an incoherent write so
-      // readers get a barrier, which is harmless for an upload.
-      {"mask", Access::write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"position", "normal", "mask"}};
-  d.params = {
-      int_param("rays", 256, 1, 65536, "", "Shadow rays per pixel M (stratified light points)"),
-      int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the raster reference's)"),
-  };
-  return {d, [] { return std::make_unique<RaytracedReferencePass>(); }};
+  // The mask is written by a texture upload (glTextureSubImage2D); declared as an incoherent
+  // image write so readers get a barrier, which is harmless for an upload.
+  return exec::PassDeclBuilder("reference_raytraced")
+      .describe("Ground truth: exact area-light visibility ray-traced on the CPU (Embree), traced when inputs change")
+      .imported("scene")
+      .imported("light")
+      .imported("camera", false)
+      .sampled("position", {Format::RGBA32F})
+      .sampled("normal")
+      .image_out("mask", {Format::R32F})
+      .same_size({"position", "normal", "mask"})
+      .param(int_param("rays", 256, 1, 65536, "", "Shadow rays per pixel M (stratified light points)"))
+      .param(int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the raster reference's)"))
+      .build<RaytracedReferencePass>();
 }
 
 }  // namespace penumbra::reference
