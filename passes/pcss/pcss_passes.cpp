@@ -3,51 +3,42 @@
 
 #include <optional>
 
+#include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
 namespace {
 
-using graph::Access;
 using graph::Format;
 using graph::ParamDesc;
-using graph::ParamType;
-using graph::SlotKind;
-using graph::Usage;
 
-ParamDesc samples_param(const char* what) {
-  ParamDesc d{.name = "samples", .type = ParamType::integer, .default_value = 16, .min = 4, .max = 64};
-  d.description = std::string("Vogel-disk taps of the ") + what;
-  return d;
+graph::ParamDesc samples_param(const char* what) {
+  return graph::int_param("samples", 16, 4, 64, "", std::string("Vogel-disk taps of the ") + what);
 }
 
-ParamDesc light_size_scale_param() {
-  ParamDesc d{.name = "light_size_scale", .type = ParamType::real, .default_value = 1.0, .min = 0.0, .max = 10.0};
-  d.description = "Multiplier on the light's emitter diameter (Light::size)";
-  return d;
+graph::ParamDesc light_size_scale_param() {
+  return graph::real_param("light_size_scale", 1.0, 0.0, 10.0, "",
+                           "Multiplier on the light's emitter diameter (Light::size)");
 }
 
-ParamDesc depth_bias_param() {
-  ParamDesc d{.name = "depth_bias", .type = ParamType::real, .default_value = 0.0002, .min = 0.0, .max = 0.05};
-  d.unit = "window depth";
-  d.description = "Constant bias subtracted from the receiver-plane depth of every tap";
-  return d;
+graph::ParamDesc depth_bias_param() {
+  return graph::real_param("depth_bias", 0.0002, 0.0, 0.05, "window depth",
+                           "Constant bias subtracted from the receiver-plane depth of every tap");
 }
 
-ParamDesc max_uv_param(const char* name, const char* what) {
-  ParamDesc d{.name = name, .type = ParamType::real, .default_value = 0.05, .min = 0.0, .max = 1.0};
-  d.unit = "shadow-map UV";
-  d.description = std::string("Upper bound of the ") + what + " width";
-  return d;
+graph::ParamDesc max_uv_param(const char* name, const char* what) {
+  return graph::real_param(name, 0.05, 0.0, 1.0, "shadow-map UV", std::string("Upper bound of the ") + what + " width");
 }
 
-std::vector<graph::SlotDecl> receiver_slots() {
-  return {
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"normal", Access::read, SlotKind::texture, {Format::RGBA16F, Format::RGBA32F}, Usage::sampled, true},
-      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, false},
-  };
+// The G-buffer and shadow-map inputs both PCSS passes read.
+exec::PassDeclBuilder receiver_pass(const char* name, const char* description) {
+  exec::PassDeclBuilder b(name);
+  b.describe(description)
+      .sampled("position", {Format::RGBA32F})
+      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
+      .sampled("shadow_map", {Format::DEPTH32F})
+      .imported("light", false);
+  return b;
 }
 
 class BlockerSearchPass final : public exec::PassImpl {
@@ -105,28 +96,28 @@ class FilterPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType pcss_blocker_search_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pcss_blocker_search";
-  d.description = "PCSS blocker search: mean blocker distance (world units, 0 = none) (compute)";
-  d.slots = receiver_slots();
-  d.slots.push_back({"blocker", Access::write, SlotKind::texture, {Format::R32F}, Usage::image_store, true});
-  d.same_size_groups = {{"position", "normal", "blocker"}};
-  d.params = {samples_param("blocker search"), light_size_scale_param(), depth_bias_param(),
-              max_uv_param("max_search_uv", "blocker search region")};
-  return {d, [] { return std::make_unique<BlockerSearchPass>(); }};
+  return receiver_pass("pcss_blocker_search",
+                       "PCSS blocker search: mean blocker distance (world units, 0 = none) (compute)")
+      .image_out("blocker", {Format::R32F})
+      .same_size({"position", "normal", "blocker"})
+      .param(samples_param("blocker search"))
+      .param(light_size_scale_param())
+      .param(depth_bias_param())
+      .param(max_uv_param("max_search_uv", "blocker search region"))
+      .build<BlockerSearchPass>();
 }
 
 exec::PassType pcss_filter_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pcss_filter";
-  d.description = "PCSS penumbra estimate (Fernando 2005 eq. 1) and PCF of that width (compute)";
-  d.slots = receiver_slots();
-  d.slots.push_back({"blocker", Access::read, SlotKind::texture, {Format::R32F}, Usage::sampled, true});
-  d.slots.push_back({"mask", Access::write, SlotKind::texture, {Format::R16F}, Usage::image_store, true});
-  d.same_size_groups = {{"position", "normal", "blocker", "mask"}};
-  d.params = {samples_param("filter"), light_size_scale_param(), depth_bias_param(),
-              max_uv_param("max_filter_uv", "filter kernel")};
-  return {d, [] { return std::make_unique<FilterPass>(); }};
+  return receiver_pass("pcss_filter",
+                       "PCSS penumbra estimate (Fernando 2005 eq. 1) and PCF of that width (compute)")
+      .sampled("blocker", {Format::R32F})
+      .image_out("mask", {Format::R16F})
+      .same_size({"position", "normal", "blocker", "mask"})
+      .param(samples_param("filter"))
+      .param(light_size_scale_param())
+      .param(depth_bias_param())
+      .param(max_uv_param("max_filter_uv", "filter kernel"))
+      .build<FilterPass>();
 }
 
 }  // namespace penumbra::passes
