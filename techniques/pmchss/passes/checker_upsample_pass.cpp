@@ -1,5 +1,6 @@
 // Checkerboard upsample (Sterna 2018, section 3): unpack the computed half of the pixels and
 // fill the others from their four neighbours weighted by 1 / (eps + |delta linear depth|).
+#include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
 #include "techniques/pmchss/passes/pmchss_pass_types.h"
@@ -7,10 +8,7 @@
 namespace penumbra::pmchss {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 class CheckerUpsamplePass final : public exec::PassImpl {
  public:
@@ -30,18 +28,15 @@ class CheckerUpsamplePass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType checker_upsample_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pmchss_checker_upsample";
-  d.description = "Checkerboard shadow mask -> full resolution, depth-aware (Sterna 2018, 3)";
-  d.slots = {
-      {"checker", Access::read, SlotKind::texture, {Format::RG16F}, Usage::sampled, true},
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"mask", Access::write, SlotKind::texture, {Format::R16F}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"position", "mask"}};
-  d.params = {real_param("depth_epsilon", 0.001, 1e-6, 10.0, "world units",
-                         "eps of the neighbour weight 1 / (eps + |delta depth|)")};
-  return {d, [] { return std::make_unique<CheckerUpsamplePass>(); }};
+  return exec::PassDeclBuilder("pmchss_checker_upsample")
+      .describe("Checkerboard shadow mask -> full resolution, depth-aware (Sterna 2018, 3)")
+      .sampled("checker", {Format::RG16F})
+      .sampled("position", {Format::RGBA32F})
+      .image_out("mask", {Format::R16F})
+      .same_size({"position", "mask"})
+      .param(real_param("depth_epsilon", 0.001, 1e-6, 10.0, "world units",
+                        "eps of the neighbour weight 1 / (eps + |delta depth|)"))
+      .build<CheckerUpsamplePass>();
 }
 
 }  // namespace penumbra::pmchss

@@ -1,4 +1,5 @@
 // Min-filter variant, step 1 (Sterna 2018, section 2.3): min-downsample of the shadow map.
+#include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
 #include "techniques/pmchss/passes/pmchss_pass_types.h"
@@ -6,10 +7,7 @@
 namespace penumbra::pmchss {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 class MinDownsamplePass final : public exec::PassImpl {
  public:
@@ -30,16 +28,13 @@ class MinDownsamplePass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType min_downsample_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pmchss_min_downsample";
-  d.description = "Min of each block of the shadow map, window depth (Sterna 2018, 2.3)";
-  d.slots = {
-      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
-      {"min_depth", Access::write, SlotKind::texture, {Format::R32F}, Usage::image_store, true},
-  };
-  d.params = {real_param("shadow_filter_max_size", 0.002, 1e-4, 0.05, "shadow-map UV", "Largest PCF kernel radius"),
-              real_param("penumbra_kernel_scale", 1.2, 1.0, 2.0, "", "Search radius / filter radius")};
-  return {d, [] { return std::make_unique<MinDownsamplePass>(); }};
+  return exec::PassDeclBuilder("pmchss_min_downsample")
+      .describe("Min of each block of the shadow map, window depth (Sterna 2018, 2.3)")
+      .sampled("shadow_map", {Format::DEPTH32F})
+      .image_out("min_depth", {Format::R32F})
+      .param(real_param("shadow_filter_max_size", 0.002, 1e-4, 0.05, "shadow-map UV", "Largest PCF kernel radius"))
+      .param(real_param("penumbra_kernel_scale", 1.2, 1.0, 2.0, "", "Search radius / filter radius"))
+      .build<MinDownsamplePass>();
 }
 
 }  // namespace penumbra::pmchss

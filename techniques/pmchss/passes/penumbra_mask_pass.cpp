@@ -1,4 +1,5 @@
 // Penumbra mask pass (Sterna 2018, section 2.2): the blocker search at screen/4 or screen/2.
+#include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
 #include "techniques/pmchss/passes/pmchss_pass_types.h"
@@ -6,10 +7,7 @@
 namespace penumbra::pmchss {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 class PenumbraMaskPass final : public exec::PassImpl {
  public:
@@ -42,21 +40,18 @@ class PenumbraMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType penumbra_mask_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pmchss_penumbra_mask";
-  d.description = "pmchss penumbra mask: reduced-resolution blocker search (Sterna 2018, 2.2)";
-  d.slots = {
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, false},
-      {"mask", Access::write, SlotKind::texture, {Format::R16F}, Usage::image_store, true},
-  };
-  d.params = penumbra_params();
-  d.params.push_back(int_param("blocker_samples", 32, 4, 64, "", "Blocker search taps"));
-  d.params.push_back(bool_param("default_one", false, "Write 1 where no blocker is found"));
-  d.params.push_back(enum_param("output", "penumbra", {"penumbra", "blocker_depth"},
-                                "What to write: penumbra, or mean blocker window depth (debug)"));
-  return {d, [] { return std::make_unique<PenumbraMaskPass>(); }};
+  exec::PassDeclBuilder b("pmchss_penumbra_mask");
+  b.describe("pmchss penumbra mask: reduced-resolution blocker search (Sterna 2018, 2.2)")
+      .sampled("position", {Format::RGBA32F})
+      .sampled("shadow_map", {Format::DEPTH32F})
+      .imported("light", false)
+      .image_out("mask", {Format::R16F});
+  for (graph::ParamDesc& d : penumbra_params()) b.param(std::move(d));
+  return b.param(int_param("blocker_samples", 32, 4, 64, "", "Blocker search taps"))
+      .param(bool_param("default_one", false, "Write 1 where no blocker is found"))
+      .param(enum_param("output", "penumbra", {"penumbra", "blocker_depth"},
+                        "What to write: penumbra, or mean blocker window depth (debug)"))
+      .build<PenumbraMaskPass>();
 }
 
 }  // namespace penumbra::pmchss

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
 #include "techniques/pmchss/passes/pmchss_pass_types.h"
@@ -11,10 +12,7 @@
 namespace penumbra::pmchss {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 const char* mode_define(const std::string& mode) {
   if (mode == "max") return "1";
@@ -55,22 +53,19 @@ class SeparableFilterPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType separable_filter_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pmchss_separable_filter";
-  d.description = "One axis of a separable gaussian / max / min filter (Sterna 2018, 2.2-2.3)";
-  d.slots = {
-      {"input", Access::read, SlotKind::texture, {Format::R16F, Format::R32F}, Usage::sampled, true},
-      {"output", Access::write, SlotKind::texture, {Format::R16F, Format::R32F}, Usage::image_store, true},
-  };
-  d.same_size_groups = {{"input", "output"}};
-  d.params = {enum_param("mode", "gaussian", {"gaussian", "max", "min", "copy"}, "Filter kind"),
-              enum_param("axis", "x", {"x", "y"}, "Filter direction"),
-              int_param("radius", 3, 0, 16, "texels", "Taps each side (7x7 = radius 3)"),
-              real_param("sigma", 3.0, 0.1, 16.0, "texels", "Gaussian standard deviation"),
-              real_param("radius_uv", 0.0, 0.0, 0.05, "shadow-map UV",
-                         "When > 0: radius = ceil(radius_uv x radius_uv_scale x width), 1..16 texels"),
-              real_param("radius_uv_scale", 1.0, 1.0, 2.0, "", "Multiplies radius_uv")};
-  return {d, [] { return std::make_unique<SeparableFilterPass>(); }};
+  return exec::PassDeclBuilder("pmchss_separable_filter")
+      .describe("One axis of a separable gaussian / max / min filter (Sterna 2018, 2.2-2.3)")
+      .sampled("input", {Format::R16F, Format::R32F})
+      .image_out("output", {Format::R16F, Format::R32F})
+      .same_size({"input", "output"})
+      .param(enum_param("mode", "gaussian", {"gaussian", "max", "min", "copy"}, "Filter kind"))
+      .param(enum_param("axis", "x", {"x", "y"}, "Filter direction"))
+      .param(int_param("radius", 3, 0, 16, "texels", "Taps each side (7x7 = radius 3)"))
+      .param(real_param("sigma", 3.0, 0.1, 16.0, "texels", "Gaussian standard deviation"))
+      .param(real_param("radius_uv", 0.0, 0.0, 0.05, "shadow-map UV",
+                        "When > 0: radius = ceil(radius_uv x radius_uv_scale x width), 1..16 texels"))
+      .param(real_param("radius_uv_scale", 1.0, 1.0, 2.0, "", "Multiplies radius_uv"))
+      .build<SeparableFilterPass>();
 }
 
 }  // namespace penumbra::pmchss

@@ -1,6 +1,7 @@
 // Full-resolution shadow mask of pmchss (Sterna 2018, Listing 6) with the penumbra from an
 // in-pass blocker search (regular CHSS, 2.1), the penumbra mask (2.2) or the min map (2.3);
 // optionally only the checkerboard half of the pixels, packed (section 3).
+#include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
 #include "techniques/pmchss/passes/pmchss_pass_types.h"
@@ -8,10 +9,7 @@
 namespace penumbra::pmchss {
 namespace {
 
-using graph::Access;
 using graph::Format;
-using graph::SlotKind;
-using graph::Usage;
 
 class ShadowMaskPass final : public exec::PassImpl {
  public:
@@ -60,26 +58,21 @@ class ShadowMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType shadow_mask_pass_type() {
-  graph::PassTypeDecl d;
-  d.name = "pmchss_shadow_mask";
-  d.description = "pmchss shadow mask: 16 Vogel taps of hardware PCF scaled by the penumbra "
-                  "(Sterna 2018, Listing 6)";
-  d.slots = {
-      {"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
-      {"normal", Access::read, SlotKind::texture, {Format::RGBA16F}, Usage::sampled, true},
-      {"shadow_map", Access::read, SlotKind::texture, {Format::DEPTH32F}, Usage::sampled, true},
-      {"light", Access::read, SlotKind::imported, {}, Usage::imported, false},
-      {"penumbra_mask", Access::read, SlotKind::texture, {Format::R16F}, Usage::sampled, false},
-      {"min_depth", Access::read, SlotKind::texture, {Format::R32F}, Usage::sampled, false},
-      {"mask", Access::write, SlotKind::texture, {Format::R16F, Format::RG16F}, Usage::image_store, true},
-  };
-  d.params = penumbra_params();
-  d.params.push_back(enum_param("source", "search", {"search", "mask", "min_depth"},
-                                "Where the penumbra comes from"));
-  d.params.push_back(int_param("blocker_samples", 16, 4, 64, "", "Blocker search taps (source=search)"));
-  d.params.push_back(int_param("filter_samples", 16, 4, 64, "", "PCF taps"));
-  d.params.push_back(bool_param("checkerboard", false, "Compute (x + y) even pixels only, packed RG16F"));
-  return {d, [] { return std::make_unique<ShadowMaskPass>(); }};
+  exec::PassDeclBuilder b("pmchss_shadow_mask");
+  b.describe("pmchss shadow mask: 16 Vogel taps of hardware PCF scaled by the penumbra (Sterna 2018, Listing 6)")
+      .sampled("position", {Format::RGBA32F})
+      .sampled("normal", {Format::RGBA16F})
+      .sampled("shadow_map", {Format::DEPTH32F})
+      .imported("light", false)
+      .sampled("penumbra_mask", {Format::R16F}, false)
+      .sampled("min_depth", {Format::R32F}, false)
+      .image_out("mask", {Format::R16F, Format::RG16F});
+  for (graph::ParamDesc& d : penumbra_params()) b.param(std::move(d));
+  return b.param(enum_param("source", "search", {"search", "mask", "min_depth"}, "Where the penumbra comes from"))
+      .param(int_param("blocker_samples", 16, 4, 64, "", "Blocker search taps (source=search)"))
+      .param(int_param("filter_samples", 16, 4, 64, "", "PCF taps"))
+      .param(bool_param("checkerboard", false, "Compute (x + y) even pixels only, packed RG16F"))
+      .build<ShadowMaskPass>();
 }
 
 }  // namespace penumbra::pmchss
