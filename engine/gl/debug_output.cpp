@@ -36,7 +36,23 @@ void GLAD_API_PTR on_debug_message(GLenum source, GLenum type, GLuint id, GLenum
 }
 
 #ifdef PENUMBRA_GL_STRICT
-const char* error_name(GLenum e) {
+// glad's debug loader calls this after every GL function. glGetError itself goes through
+// glad_glGetError, the raw pointer, so this does not recurse.
+void post_call_check(void* ret, const char* name, GLADapiproc proc, int len_args, ...) {
+  GLenum err = glad_glGetError();
+  if (err == GL_NO_ERROR) return;
+  // Straight to stderr: the process is about to abort, whatever the log sinks are.
+  std::fprintf(stderr, "penumbra: %s in %s (PENUMBRA_GL_STRICT); call stack:\n", gl_error_name(err), name);
+  void* frames[32];
+  int n = backtrace(frames, 32);
+  backtrace_symbols_fd(frames + 1, n - 1, STDERR_FILENO);
+  std::abort();
+}
+#endif
+
+}  // namespace
+
+const char* gl_error_name(unsigned int e) {
   switch (e) {
     case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
     case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
@@ -46,22 +62,6 @@ const char* error_name(GLenum e) {
     default: return "GL error";
   }
 }
-
-// glad's debug loader calls this after every GL function. glGetError itself goes through
-// glad_glGetError, the raw pointer, so this does not recurse.
-void post_call_check(void* ret, const char* name, GLADapiproc proc, int len_args, ...) {
-  GLenum err = glad_glGetError();
-  if (err == GL_NO_ERROR) return;
-  // Straight to stderr: the process is about to abort, whatever the log sinks are.
-  std::fprintf(stderr, "penumbra: %s in %s (PENUMBRA_GL_STRICT); call stack:\n", error_name(err), name);
-  void* frames[32];
-  int n = backtrace(frames, 32);
-  backtrace_symbols_fd(frames + 1, n - 1, STDERR_FILENO);
-  std::abort();
-}
-#endif
-
-}  // namespace
 
 void install_debug_output() {
   if (GLAD_GL_KHR_debug || GLAD_GL_VERSION_4_3) {

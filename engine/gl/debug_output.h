@@ -6,6 +6,9 @@ namespace penumbra::gl {
 
 void install_debug_output();
 
+// "GL_INVALID_OPERATION" etc. for a glGetError code.
+const char* gl_error_name(unsigned int error);
+
 // Strict builds only: true while the post-call hook is armed.
 bool strict_gl_errors();
 

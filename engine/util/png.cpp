@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "util/file_write.h"
+
 namespace penumbra {
 
 Status write_png_rgba8(const std::string& path, int width, int height,
@@ -24,15 +26,7 @@ Status write_png_rgba8(const std::string& path, int width, int height,
     e.file = path;
     return e;
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    Error e = make_error("cannot move the written PNG into place: " + ec.message());
-    e.file = path;
-    return e;
-  }
-  return {};
+  return move_into_place(tmp, path);
 }
 
 Status write_png_grey(const std::string& path, int width, int height, const std::vector<float>& values,

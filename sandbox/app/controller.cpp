@@ -8,22 +8,12 @@
 #include "app/preset.h"
 #include "plugin/frame_graph.h"
 #include "scene/load_scene.h"
+#include "gl/debug_output.h"
 #include "util/png.h"
 
 namespace penumbra::sandbox {
 
 namespace {
-const char* gl_error_name(GLenum e) {
-  switch (e) {
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    default: return "GL error";
-  }
-}
-
 metrics::MaskImage first_channel(const gl::Texture& t, int channel) {
   metrics::MaskImage m(t.width(), t.height());
   std::vector<float> texels = t.read();
@@ -422,7 +412,7 @@ Status SandboxController::check_gl_errors(const std::string& when) {
   for (int i = 0; i < 32; ++i) {
     GLenum e = glGetError();
     if (e == GL_NO_ERROR) break;
-    codes += (codes.empty() ? "" : ", ") + std::string(gl_error_name(e));
+    codes += (codes.empty() ? "" : ", ") + std::string(gl::gl_error_name(e));
   }
   if (codes.empty()) return {};
   return make_error("GL error " + when + ": " + codes, ErrorKind::internal);

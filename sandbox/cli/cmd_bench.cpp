@@ -7,6 +7,7 @@
 
 #include "cli/bench_report.h"
 #include "cli/command.h"
+#include "util/file_write.h"
 #include "cli/context_option.h"
 #include "cli/eval_capture.h"
 #include "cli/scene_option.h"
@@ -83,25 +84,7 @@ Result<BenchOptions> parse_bench_options(const ParsedArgs& args, const plugin::T
 }
 
 Status write_json(const std::string& path, const BenchReport& report) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary);
-    f << bench_report_json(report);
-    if (!f) {
-      std::filesystem::remove(tmp);
-      Error e = make_error("cannot write the JSON report");
-      e.file = path;
-      return e;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp);
-    Error e = make_error("cannot write the JSON report: " + ec.message());
-    e.file = path;
-    return e;
-  }
+  if (Status s = write_file_whole(path, bench_report_json(report)); !s) return s;
   std::printf("wrote %s\n", path.c_str());
   return {};
 }

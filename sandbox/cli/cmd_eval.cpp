@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "cli/command.h"
+#include "util/file_write.h"
 #include "cli/context_option.h"
 #include "cli/eval_capture.h"
 #include "cli/eval_report.h"
@@ -168,25 +169,7 @@ Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::
     }
   }
   if (!o.json.empty()) {
-    const std::string tmp = o.json + ".tmp";
-    {
-      std::ofstream f(tmp, std::ios::binary);
-      f << eval_report_json(report);
-      if (!f) {
-        std::filesystem::remove(tmp);
-        Error e = make_error("cannot write the JSON report");
-        e.file = o.json;
-        return e;
-      }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, o.json, ec);  // whole file or nothing
-    if (ec) {
-      std::filesystem::remove(tmp);
-      Error e = make_error("cannot write the JSON report: " + ec.message());
-      e.file = o.json;
-      return e;
-    }
+    if (Status s = write_file_whole(o.json, eval_report_json(report)); !s) return s;
     std::printf("wrote %s\n", o.json.c_str());
   }
   return {};

@@ -1,0 +1,16 @@
+#pragma once
+// Writes a whole file or nothing: the text goes to PATH.partial, which is renamed over PATH
+// only when every byte was written, so a reader never sees half a report.
+#include <string>
+
+#include "util/error.h"
+
+namespace penumbra {
+
+Status write_file_whole(const std::string& path, const std::string& text);
+
+// Renames a finished temporary file over `path`; on failure removes it. (PNG writers produce
+// the temporary themselves.)
+Status move_into_place(const std::string& tmp, const std::string& path);
+
+}  // namespace penumbra
