@@ -29,17 +29,12 @@ class ShadowMapPass final : public exec::PassImpl {
       if (Status s = fb_.finish(); !s) return s;
       attached_ = depth.id();
     }
-    fb_.bind();
-    const float one = 1.0f;
-    glClearNamedFramebufferfv(fb_.id(), GL_DEPTH, 0, &one);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(ctx.real("slope_bias"), ctx.real("constant_bias"));
-    p.program().set("u_light_view_proj", ctx.frame().shadow.view_proj);
-    if (ctx.frame().scene) ctx.frame().scene->draw(p.program(), 0, true);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_DEPTH_TEST);
+    if (!ctx.frame().scene) {  // nothing casts: the map stays at the far plane
+      depth.clear(1.0f);
+      return {};
+    }
+    render_depth_map(fb_, p.program(), *ctx.frame().scene, ctx.frame().shadow.view_proj, ctx.real("slope_bias"),
+                     ctx.real("constant_bias"));
     return {};
   }
 
@@ -49,6 +44,21 @@ class ShadowMapPass final : public exec::PassImpl {
 };
 
 }  // namespace
+
+void render_depth_map(const gl::Framebuffer& target, const gl::Program& program, const exec::GpuScene& scene,
+                      const glm::mat4& view_proj, float slope_bias, float constant_bias, GLuint texture_unit) {
+  target.bind();
+  const float one = 1.0f;
+  glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(slope_bias, constant_bias);
+  program.set("u_light_view_proj", view_proj);
+  scene.draw(program, texture_unit, true);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_DEPTH_TEST);
+}
 
 exec::PassType shadow_map_pass_type() {
   return exec::PassDeclBuilder("shadow_map")

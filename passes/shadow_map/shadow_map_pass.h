@@ -1,6 +1,19 @@
 #pragma once
+#include <glm/glm.hpp>
+
+#include "exec/gpu_scene.h"
 #include "exec/pass.h"
+#include "gl/framebuffer.h"
 
 namespace penumbra::passes {
+
 exec::PassType shadow_map_pass_type();
-}
+
+// Clears `target`'s depth and draws the scene's casters (alpha-tested) from `view_proj` with
+// the slope-scaled + constant polygon offset. `program` is the shadow_map program
+// (passes/shadow_map/shadow_map.{vert,frag}.glsl); the reference renders its sample maps
+// with this too, so both biases mean the same thing everywhere.
+void render_depth_map(const gl::Framebuffer& target, const gl::Program& program, const exec::GpuScene& scene,
+                      const glm::mat4& view_proj, float slope_bias, float constant_bias, GLuint texture_unit = 0);
+
+}  // namespace penumbra::passes

@@ -9,6 +9,7 @@
 #include "gl/framebuffer.h"
 #include "reference_frame_key.h"
 #include "exec/pass_decl_builder.h"
+#include "passes/shadow_map/shadow_map_pass.h"
 #include "graph/parameters.h"
 #include "reference_progress.h"
 #include "sample_view.h"
@@ -112,17 +113,7 @@ class RasterReferencePass final : public exec::PassImpl {
   // slope-scaled + constant polygon offset, as passes/shadow_map does.
   void render_map(const gl::Program& program, const exec::GpuScene& scene, const glm::mat4& view_proj,
                   float slope_bias, float constant_bias) {
-    fb_.bind();
-    const float one = 1.0f;
-    glClearNamedFramebufferfv(fb_.id(), GL_DEPTH, 0, &one);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(slope_bias, constant_bias);
-    program.set("u_light_view_proj", view_proj);
-    scene.draw(program, kSceneTextureUnit, true);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_DEPTH_TEST);
+    passes::render_depth_map(fb_, program, scene, view_proj, slope_bias, constant_bias, kSceneTextureUnit);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
