@@ -93,6 +93,12 @@ void PassContext::dispatch_over(const gl::ShaderProgram& p, int width, int heigh
   glDispatchCompute(gx, gy, 1);
 }
 
+void PassContext::dispatch_tiles(const gl::ShaderProgram& p, int width, int height, int tile) const {
+  tile = std::max(tile, 1);
+  glUseProgram(p.id());
+  glDispatchCompute(static_cast<GLuint>((width + tile - 1) / tile), static_cast<GLuint>((height + tile - 1) / tile), 1);
+}
+
 void PassLibrary::add(PassType type) {
   declarations_.add(type.decl);
   std::string name = type.decl.name;

@@ -73,6 +73,9 @@ class PassContext {
   void dispatch_over(const gl::ShaderProgram& p, const gl::Texture& target) const {
     dispatch_over(p, target.width(), target.height());
   }
+  // One workgroup per tile x tile block of a width x height target, for shaders whose
+  // workgroup is larger than the block it writes (it also computes a halo around it).
+  void dispatch_tiles(const gl::ShaderProgram& p, int width, int height, int tile) const;
 
  private:
   const graph::PlannedBinding* find(std::string_view slot) const;

@@ -1,4 +1,5 @@
-// Penumbra mask pass (Sterna 2018, section 2.2): the blocker search at screen/4 or screen/2.
+// Penumbra mask pass (Sterna 2018, section 2.2): the blocker search at screen/4 or screen/2 and,
+// in the same dispatch, the optional max filter and the 7x7 Gaussian blur of the mask.
 #include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
@@ -8,6 +9,10 @@ namespace penumbra::pmchss {
 namespace {
 
 using graph::Format;
+
+// TILE in penumbra_mask.comp.glsl: mask texels a 32x32 workgroup writes, each way, once the
+// 3-texel halo of every filter stage is taken off.
+int tile_size(bool blur, bool max_filter) { return 32 - 6 * ((blur ? 1 : 0) + (max_filter ? 1 : 0)); }
 
 class PenumbraMaskPass final : public exec::PassImpl {
  public:
@@ -21,6 +26,8 @@ class PenumbraMaskPass final : public exec::PassImpl {
          .defines = {{"BLOCKER_SAMPLES", std::to_string(ctx.integer("blocker_samples"))},
                      {"FILTER_SAMPLES", "16"},
                      mapping_define(ctx),
+                     {"BLUR", ctx.boolean("blur") ? "1" : "0"},
+                     {"MAX_FILTER", ctx.boolean("max_filter") ? "1" : "0"},
                      {blocker_depth ? "OUTPUT_BLOCKER_DEPTH" : "OUTPUT_PENUMBRA", "1"}}});
     if (!p.valid()) return *p.last_error();
     if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
@@ -29,7 +36,8 @@ class PenumbraMaskPass final : public exec::PassImpl {
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     set_pmchss_uniforms(p.program(), ctx);
     p.program().set("u_default_one", ctx.boolean("default_one") ? 1 : 0);
-    ctx.dispatch_over(p, mask.width(), mask.height());
+    p.program().set("u_blur_sigma", ctx.real("blur_sigma"));
+    ctx.dispatch_tiles(p, mask.width(), mask.height(), tile_size(ctx.boolean("blur"), ctx.boolean("max_filter")));
     return {};
   }
 
@@ -41,7 +49,8 @@ class PenumbraMaskPass final : public exec::PassImpl {
 
 exec::PassType penumbra_mask_pass_type() {
   exec::PassDeclBuilder b("pmchss_penumbra_mask");
-  b.describe("pmchss penumbra mask: reduced-resolution blocker search (Sterna 2018, 2.2)")
+  b.describe("pmchss penumbra mask: reduced-resolution blocker search, then max filter and "
+             "Gaussian blur in the same dispatch (Sterna 2018, 2.2)")
       .sampled("position", {Format::RGBA32F})
       .sampled("shadow_map", {Format::DEPTH32F})
       .imported("light", false)
@@ -49,6 +58,9 @@ exec::PassType penumbra_mask_pass_type() {
   for (graph::ParamDesc& d : penumbra_params()) b.param(std::move(d));
   return b.param(int_param("blocker_samples", 32, 4, 64, "", "Blocker search taps"))
       .param(bool_param("default_one", false, "Write 1 where no blocker is found"))
+      .param(bool_param("blur", false, "7x7 separable Gaussian blur of the mask (section 2.2)"))
+      .param(real_param("blur_sigma", 3.0, 0.5, 8.0, "mask texels", "Gaussian sigma (section 2.2: 3)"))
+      .param(bool_param("max_filter", false, "7x7 max filter before the blur (section 2.2, not recommended)"))
       .param(enum_param("output", "penumbra", {"penumbra", "blocker_depth"},
                         "What to write: penumbra, or mean blocker window depth (debug)"))
       .build<PenumbraMaskPass>();

@@ -1,8 +1,9 @@
 #pragma once
 // The pass types of the pmchss technique (Sterna 2018), each a compute pass:
-//   pmchss_penumbra_mask     reduced-resolution blocker search -> penumbra (section 2.2), or the
+//   pmchss_penumbra_mask     reduced-resolution blocker search -> penumbra, then the optional max
+//                            filter and Gaussian blur in the same dispatch (section 2.2), or the
 //                            average blocker depth for the debug view
-//   pmchss_separable_filter  one axis of a gaussian / max / min / copy filter (sections 2.2, 2.3)
+//   pmchss_separable_filter  one axis of a gaussian / max / min / copy filter (section 2.3)
 //   pmchss_min_downsample    4x4 min of the shadow map (section 2.3)
 //   pmchss_shadow_mask       full-resolution soft shadow, penumbra from an in-pass search, the
 //                            mask or the min map, optionally checkerboarded (sections 2.1-3)

@@ -1,6 +1,6 @@
-// One axis of a separable single-channel filter: the penumbra mask's 7x7 gaussian (sigma 3) and
-// optional max filter (Sterna 2018, section 2.2), the min filter and small blur of the min-filter
-// variant (section 2.3).
+// One axis of a separable single-channel filter: the min filter and small blur of the min-filter
+// variant (Sterna 2018, section 2.3). (The penumbra mask's max filter and blur, section 2.2, run
+// inside the mask's own dispatch: penumbra_mask.comp.glsl.)
 #include <algorithm>
 #include <cmath>
 

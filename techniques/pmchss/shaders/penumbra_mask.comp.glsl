@@ -1,51 +1,134 @@
 #version 450 core
 // Penumbra mask (Sterna 2018, section 2.2): the blocker search of Listing 3 run at a reduced
-// resolution (screen/4 or screen/2), one texel per invocation. The texel's receiver is the
-// G-buffer position at the centre of the full-resolution block it covers.
+// resolution (screen/4 or screen/2), then -- in the same dispatch -- the optional 7x7 max filter
+// and the separable 7x7 Gaussian blur (sigma 3) the paper applies to the mask.
 //
-// OUTPUT_BLOCKER_DEPTH (define) turns the same search into the debug view of the average
-// blocker window depth (1 = no blocker) instead of the penumbra.
-layout(local_size_x = 8, local_size_y = 8) in;
+// Why one dispatch: at screen/4 the search and each blur axis are tiny grids whose cost on a
+// large GPU is mostly fixed per dispatch. Measured on an H100 at 1080p (docs/results/pmchss.md):
+// search + blur x + blur y as three dispatches 21.4 + 8.2 + 8.7 us, this one dispatch 24.8 us.
+//
+// A 32 x 32 workgroup (1024 invocations, the GL minimum for MAX_COMPUTE_WORK_GROUP_INVOCATIONS)
+// searches a 32 x 32 region of the mask, one search per invocation, into shared memory, runs the
+// filter stages there and writes the TILE x TILE block inside the halo (RADIUS per stage):
+// TILE = 32, 26 or 20, i.e. 1.0x, 1.5x or 2.6x searches per written texel. Each stage reads its
+// input at the clamped image coordinate (the separable passes' clamp-to-edge), which always lies
+// in the part of the region the previous stage computed: clamping moves a coordinate towards the
+// block, and every stage covers the block. The pass dispatches one workgroup per block
+// (PassContext::dispatch_tiles) and computes TILE with the same formula (penumbra_mask_pass.cpp).
+//
+// Defines: BLUR (0/1), MAX_FILTER (0/1); OUTPUT_BLOCKER_DEPTH turns the search into the debug
+// view of the average blocker window depth (1 = no blocker) instead of the penumbra.
+#define REGION 32
+#define TILE (REGION - 6 * (BLUR + MAX_FILTER))
+layout(local_size_x = REGION, local_size_y = REGION) in;
 #include "shadow_common.glsl"
 #include "noise.glsl"
 #include "receiver_plane.glsl"
 #include "pmchss_common.glsl"
 
+const int kRadius = 3;  // 7x7 max filter and 7x7 Gaussian (section 2.2)
+const int kHalo = kRadius * (BLUR + MAX_FILTER);
+const int kRegion = REGION;  // TILE + 2 * kHalo
+const int kRegionTexels = kRegion * kRegion;
+const int kThreads = kRegionTexels;
+
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_position;    // full resolution, w = linear view depth (0: background)
 uniform sampler2D u_shadow_map;  // raw window depth, nearest (Listing 3's pointClampSampler)
 uniform int u_default_one;       // section 2.2: write 1 instead of 0 where no blocker is found
+uniform float u_blur_sigma;      // mask texels (section 2.2: 3)
 
-void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 mask_size = imageSize(u_mask);
-  if (any(greaterThanEqual(p, mask_size))) return;
-  ivec2 full_size = textureSize(u_position, 0);
+// Two region-sized buffers the stages ping-pong between (offset 0 and kRegionTexels).
+shared float s_region[2 * kRegionTexels];
+
+float search(ivec2 p, ivec2 mask_size, ivec2 full_size) {
   ivec2 scale = max(full_size / mask_size, ivec2(1));
   ivec2 full = min(p * scale + scale / 2, full_size - 1);
-
   // "Lit" everywhere nothing is found: background, outside the light frustum, no blocker.
-  float no_blocker = u_default_one == 1 ? 1.0 : 0.0;
+  float value = u_default_one == 1 ? 1.0 : 0.0;
 #ifdef OUTPUT_BLOCKER_DEPTH
-  no_blocker = 1.0;
+  value = 1.0;
 #endif
-  float value = no_blocker;
   vec4 pos = texelFetch(u_position, full, 0);
-  if (pos.w > 0.0) {
-    vec3 c = shadow_coord(pos.xyz);
-    if (pmchss_in_shadow_frustum(c)) {
-      vec2 dz_duv = receiver_plane_gradient(u_position, full, c, vec3(0.0));
-      // Noise on the mask's own pixel grid: neighbouring mask texels get different rotations.
-      float phi = pmchss_noise_phi(p, false);
-      float blocker;
-      float count = pmchss_blocker_search(u_shadow_map, c.xy, c.z, dz_duv, BLOCKER_SAMPLES, phi,
-                                          blocker);
+  if (pos.w <= 0.0) return value;
+  vec3 c = shadow_coord(pos.xyz);
+  if (!pmchss_in_shadow_frustum(c)) return value;
+  vec2 dz_duv = receiver_plane_gradient(u_position, full, c, vec3(0.0));
+  // Noise on the mask's own pixel grid: neighbouring mask texels get different rotations.
+  float phi = pmchss_noise_phi(p, false);
+  float blocker;
+  float count = pmchss_blocker_search(u_shadow_map, c.xy, c.z, dz_duv, BLOCKER_SAMPLES, phi, blocker);
 #ifdef OUTPUT_BLOCKER_DEPTH
-      value = blocker;
+  return blocker;
 #else
-      if (count > 0.0) value = pmchss_penumbra_from_blocker(c.z, blocker);
+  return count > 0.0 ? pmchss_penumbra_from_blocker(c.z, blocker) : value;
 #endif
+}
+
+// Index into a region buffer of the texel at image coordinate g, clamped to the image.
+int region_index(ivec2 g, ivec2 origin, ivec2 size) {
+  ivec2 r = clamp(g, ivec2(0), size - 1) - origin;
+  return r.y * kRegion + r.x;
+}
+
+bool inside(ivec2 g, ivec2 size) { return all(greaterThanEqual(g, ivec2(0))) && all(lessThan(g, size)); }
+
+// One filter axis from buffer `src` to buffer `dst` over region texels [lo, hi); texels outside
+// the image are skipped (nothing reads them). gaussian: normalised exp(-t^2 / 2 sigma^2) weights,
+// as the separable pass computes them; otherwise max.
+void filter_stage(int src, int dst, bool gaussian, ivec2 axis, ivec2 lo, ivec2 hi, ivec2 origin,
+                  ivec2 size) {
+  ivec2 extent = hi - lo;
+  for (int i = int(gl_LocalInvocationIndex); i < extent.x * extent.y; i += kThreads) {
+    ivec2 r = lo + ivec2(i % extent.x, i / extent.x);
+    ivec2 g = origin + r;
+    if (!inside(g, size)) continue;
+    float acc = gaussian ? 0.0 : s_region[src + region_index(g, origin, size)];
+    float weights = 0.0;
+    for (int t = -kRadius; t <= kRadius; ++t) {
+      float v = s_region[src + region_index(g + t * axis, origin, size)];
+      if (gaussian) {
+        float w = exp(-float(t * t) / (2.0 * u_blur_sigma * u_blur_sigma));
+        acc += w * v;
+        weights += w;
+      } else {
+        acc = max(acc, v);
+      }
     }
+    s_region[dst + r.y * kRegion + r.x] = gaussian ? acc / weights : acc;
   }
-  imageStore(u_mask, p, vec4(value));
+  memoryBarrierShared();
+  barrier();
+}
+
+void main() {
+  ivec2 size = imageSize(u_mask);
+  ivec2 full_size = textureSize(u_position, 0);
+  ivec2 origin = ivec2(gl_WorkGroupID.xy) * TILE - kHalo;
+
+  ivec2 searched = ivec2(gl_LocalInvocationID.xy);  // this invocation's region texel
+  if (inside(origin + searched, size))
+    s_region[int(gl_LocalInvocationIndex)] = search(origin + searched, size, full_size);
+  memoryBarrierShared();
+  barrier();
+
+  int src = 0, dst = kRegionTexels;
+  ivec2 lo = ivec2(0), hi = ivec2(kRegion);
+#if MAX_FILTER
+  // Section 2.2's max filter before the blur (the paper recommends against it; kept selectable).
+  lo.x += kRadius; hi.x -= kRadius;
+  filter_stage(src, dst, false, ivec2(1, 0), lo, hi, origin, size);
+  lo.y += kRadius; hi.y -= kRadius;
+  filter_stage(dst, src, false, ivec2(0, 1), lo, hi, origin, size);
+#endif
+#if BLUR
+  lo.x += kRadius; hi.x -= kRadius;
+  filter_stage(src, dst, true, ivec2(1, 0), lo, hi, origin, size);
+  lo.y += kRadius; hi.y -= kRadius;
+  filter_stage(dst, src, true, ivec2(0, 1), lo, hi, origin, size);
+#endif
+
+  ivec2 local = searched - kHalo;  // position in the block
+  if (all(greaterThanEqual(local, ivec2(0))) && all(lessThan(local, ivec2(TILE))) && inside(origin + searched, size))
+    imageStore(u_mask, origin + searched, vec4(s_region[src + int(gl_LocalInvocationIndex)]));
 }

@@ -1,9 +1,8 @@
 #version 450 core
 // One axis of a separable filter over a single-channel texture (2 * radius + 1 taps):
-//   MODE 0 gaussian: the penumbra-mask blur, 7x7 with sigma 3 in the paper (section 2.2), and
-//                    the min-filter variant's small blur of the min depth map (section 2.3)
-//   MODE 1 max:      the optional 7x7 max filter before the blur (section 2.2; the paper
-//                    recommends against it)
+//   MODE 0 gaussian: the min-filter variant's small blur of the min depth map (section 2.3)
+//   MODE 1 max:      a max filter (pmchss.json's optional mask max filter, section 2.2, runs
+//                    inside the mask's dispatch instead)
 //   MODE 2 min:      the min filter of the min-filter variant (section 2.3)
 //   MODE 3 copy:     radius 0 (keeps a graph edge when a stage is switched off)
 // Taps outside the texture are clamped to the edge.
