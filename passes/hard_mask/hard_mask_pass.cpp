@@ -2,6 +2,7 @@
 #include "passes/hard_mask/hard_mask_pass.h"
 
 #include "exec/pass_decl_builder.h"
+#include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
@@ -29,12 +30,7 @@ class HardMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType hard_mask_pass_type() {
-  return exec::PassDeclBuilder("hard_mask")
-      .describe("Binary shadow mask: one nearest shadow-map comparison per pixel (compute)")
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
-      .sampled("shadow_map", {Format::DEPTH32F})
-      .imported("light", false)
+  return shadow_receiver_pass("hard_mask", "Binary shadow mask: one nearest shadow-map comparison per pixel (compute)")
       .image_out("mask", {Format::R16F})
       .same_size({"position", "normal", "mask"})
       .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",

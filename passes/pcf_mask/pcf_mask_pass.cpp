@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "exec/pass_decl_builder.h"
+#include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
@@ -50,12 +51,7 @@ class PcfMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType pcf_mask_pass_type() {
-  return exec::PassDeclBuilder("pcf_mask")
-      .describe("Percentage-closer filtering with a box or rotated Vogel-disk kernel (compute)")
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
-      .sampled("shadow_map", {Format::DEPTH32F})
-      .imported("light", false)
+  return shadow_receiver_pass("pcf_mask", "Percentage-closer filtering with a box or rotated Vogel-disk kernel (compute)")
       .image_out("mask", {Format::R16F})
       .same_size({"position", "normal", "mask"})
       .enumeration("kernel", "box", {"box", "vogel"},

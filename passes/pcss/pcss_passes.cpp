@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "exec/pass_decl_builder.h"
+#include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
@@ -30,16 +31,6 @@ graph::ParamDesc max_uv_param(const char* name, const char* what) {
   return graph::real_param(name, 0.05, 0.0, 1.0, "shadow-map UV", std::string("Upper bound of the ") + what + " width");
 }
 
-// The G-buffer and shadow-map inputs both PCSS passes read.
-exec::PassDeclBuilder receiver_pass(const char* name, const char* description) {
-  exec::PassDeclBuilder b(name);
-  b.describe(description)
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
-      .sampled("shadow_map", {Format::DEPTH32F})
-      .imported("light", false);
-  return b;
-}
 
 class BlockerSearchPass final : public exec::PassImpl {
  public:
@@ -96,7 +87,7 @@ class FilterPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType pcss_blocker_search_pass_type() {
-  return receiver_pass("pcss_blocker_search",
+  return shadow_receiver_pass("pcss_blocker_search",
                        "PCSS blocker search: mean blocker distance (world units, 0 = none) (compute)")
       .image_out("blocker", {Format::R32F})
       .same_size({"position", "normal", "blocker"})
@@ -108,7 +99,7 @@ exec::PassType pcss_blocker_search_pass_type() {
 }
 
 exec::PassType pcss_filter_pass_type() {
-  return receiver_pass("pcss_filter",
+  return shadow_receiver_pass("pcss_filter",
                        "PCSS penumbra estimate (Fernando 2005 eq. 1) and PCF of that width (compute)")
       .sampled("blocker", {Format::R32F})
       .image_out("mask", {Format::R16F})

@@ -10,8 +10,8 @@ namespace {
 
 using graph::Format;
 
-// TILE in penumbra_mask.comp.glsl: mask texels a 32x32 workgroup writes, each way, once the
-// 3-texel halo of every filter stage is taken off.
+// TILE of penumbra_mask.comp.glsl (defined only here): mask texels a 32x32 workgroup writes,
+// each way, once the 3-texel halo of every filter stage is taken off.
 int tile_size(bool blur, bool max_filter) { return 32 - 6 * ((blur ? 1 : 0) + (max_filter ? 1 : 0)); }
 
 class PenumbraMaskPass final : public exec::PassImpl {
@@ -21,13 +21,16 @@ class PenumbraMaskPass final : public exec::PassImpl {
     if (Status s = check_search_covers_texel(ctx, shadow.width()); !s) return s;
     gl::Texture& mask = ctx.texture("mask");
     bool blocker_depth = ctx.enumeration("output") == "blocker_depth";
+    bool blur = ctx.boolean("blur"), max_filter = ctx.boolean("max_filter");
+    int tile = tile_size(blur, max_filter);
     gl::ShaderProgram& p = ctx.program(
         {.compute = "techniques/pmchss/shaders/penumbra_mask.comp.glsl",
          .defines = {{"BLOCKER_SAMPLES", std::to_string(ctx.integer("blocker_samples"))},
                      {"FILTER_SAMPLES", "16"},
                      mapping_define(ctx),
-                     {"BLUR", ctx.boolean("blur") ? "1" : "0"},
-                     {"MAX_FILTER", ctx.boolean("max_filter") ? "1" : "0"},
+                     {"BLUR", blur ? "1" : "0"},
+                     {"MAX_FILTER", max_filter ? "1" : "0"},
+                     {"TILE", std::to_string(tile)},
                      {blocker_depth ? "OUTPUT_BLOCKER_DEPTH" : "OUTPUT_PENUMBRA", "1"}}});
     if (!p.valid()) return *p.last_error();
     if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
@@ -37,7 +40,7 @@ class PenumbraMaskPass final : public exec::PassImpl {
     set_pmchss_uniforms(p.program(), ctx);
     p.program().set("u_default_one", ctx.boolean("default_one") ? 1 : 0);
     p.program().set("u_blur_sigma", ctx.real("blur_sigma"));
-    ctx.dispatch_tiles(p, mask.width(), mask.height(), tile_size(ctx.boolean("blur"), ctx.boolean("max_filter")));
+    ctx.dispatch_tiles(p, mask.width(), mask.height(), tile);
     return {};
   }
 

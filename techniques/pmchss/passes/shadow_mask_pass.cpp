@@ -3,6 +3,7 @@
 // optionally only the checkerboard half of the pixels, packed (section 3).
 #include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
+#include "passes/common/shadow_receiver_decl.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
 #include "techniques/pmchss/passes/pmchss_pass_types.h"
 
@@ -58,13 +59,10 @@ class ShadowMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType shadow_mask_pass_type() {
-  exec::PassDeclBuilder b("pmchss_shadow_mask");
-  b.describe("pmchss shadow mask: 16 Vogel taps of hardware PCF scaled by the penumbra (Sterna 2018, Listing 6)")
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F})
-      .sampled("shadow_map", {Format::DEPTH32F})
-      .imported("light", false)
-      .sampled("penumbra_mask", {Format::R16F}, false)
+  exec::PassDeclBuilder b = passes::shadow_receiver_pass(
+      "pmchss_shadow_mask",
+      "pmchss shadow mask: 16 Vogel taps of hardware PCF scaled by the penumbra (Sterna 2018, Listing 6)");
+  b.sampled("penumbra_mask", {Format::R16F}, false)
       .sampled("min_depth", {Format::R32F}, false)
       .image_out("mask", {Format::R16F, Format::RG16F});
   for (graph::ParamDesc& d : penumbra_params()) b.param(std::move(d));

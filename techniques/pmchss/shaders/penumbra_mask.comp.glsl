@@ -13,13 +13,12 @@
 // TILE = 32, 26 or 20, i.e. 1.0x, 1.5x or 2.6x searches per written texel. Each stage reads its
 // input at the clamped image coordinate (the separable passes' clamp-to-edge), which always lies
 // in the part of the region the previous stage computed: clamping moves a coordinate towards the
-// block, and every stage covers the block. The pass dispatches one workgroup per block
-// (PassContext::dispatch_tiles) and computes TILE with the same formula (penumbra_mask_pass.cpp).
+// block, and every stage covers the block. The pass sets TILE and dispatches one workgroup per
+// block (penumbra_mask_pass.cpp, PassContext::dispatch_tiles).
 //
 // Defines: BLUR (0/1), MAX_FILTER (0/1); OUTPUT_BLOCKER_DEPTH turns the search into the debug
 // view of the average blocker window depth (1 = no blocker) instead of the penumbra.
 #define REGION 32
-#define TILE (REGION - 6 * (BLUR + MAX_FILTER))
 layout(local_size_x = REGION, local_size_y = REGION) in;
 #include "shadow_common.glsl"
 #include "noise.glsl"
@@ -28,7 +27,7 @@ layout(local_size_x = REGION, local_size_y = REGION) in;
 
 const int kRadius = 3;  // 7x7 max filter and 7x7 Gaussian (section 2.2)
 const int kHalo = kRadius * (BLUR + MAX_FILTER);
-const int kRegion = REGION;  // TILE + 2 * kHalo
+const int kRegion = REGION;  // TILE + 2 * kHalo, TILE set by the pass
 const int kRegionTexels = kRegion * kRegion;
 const int kThreads = kRegionTexels;
 
@@ -101,6 +100,15 @@ void filter_stage(int src, int dst, bool gaussian, ivec2 axis, ivec2 lo, ivec2 h
   barrier();
 }
 
+// Both axes of one separable filter: x then y, each shrinking the computed part of the region by
+// the radius along its axis; the result is back in buffer `src`.
+void filter_2d(int src, int dst, bool gaussian, inout ivec2 lo, inout ivec2 hi, ivec2 origin, ivec2 size) {
+  lo.x += kRadius; hi.x -= kRadius;
+  filter_stage(src, dst, gaussian, ivec2(1, 0), lo, hi, origin, size);
+  lo.y += kRadius; hi.y -= kRadius;
+  filter_stage(dst, src, gaussian, ivec2(0, 1), lo, hi, origin, size);
+}
+
 void main() {
   ivec2 size = imageSize(u_mask);
   ivec2 full_size = textureSize(u_position, 0);
@@ -116,16 +124,10 @@ void main() {
   ivec2 lo = ivec2(0), hi = ivec2(kRegion);
 #if MAX_FILTER
   // Section 2.2's max filter before the blur (the paper recommends against it; kept selectable).
-  lo.x += kRadius; hi.x -= kRadius;
-  filter_stage(src, dst, false, ivec2(1, 0), lo, hi, origin, size);
-  lo.y += kRadius; hi.y -= kRadius;
-  filter_stage(dst, src, false, ivec2(0, 1), lo, hi, origin, size);
+  filter_2d(src, dst, false, lo, hi, origin, size);
 #endif
 #if BLUR
-  lo.x += kRadius; hi.x -= kRadius;
-  filter_stage(src, dst, true, ivec2(1, 0), lo, hi, origin, size);
-  lo.y += kRadius; hi.y -= kRadius;
-  filter_stage(dst, src, true, ivec2(0, 1), lo, hi, origin, size);
+  filter_2d(src, dst, true, lo, hi, origin, size);
 #endif
 
   ivec2 local = searched - kHalo;  // position in the block
