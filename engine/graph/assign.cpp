@@ -1,4 +1,4 @@
-// Stages 8-10: physical resources, the executor's plan, barriers.
+// Stage: assign physical resources (whole textures reused between identical descriptors).
 #include <algorithm>
 #include <numeric>
 
@@ -39,24 +39,6 @@ Descriptor descriptor_of(const CompileState& s, int resource) {
     d.bytes = static_cast<std::uint64_t>(d.width) * d.height * bytes_per_texel(r.format);
   }
   return d;
-}
-
-std::uint32_t barrier_bit(Usage u) {
-  switch (u) {
-    case Usage::sampled: return barrier_texture_fetch;
-    case Usage::image_load:
-    case Usage::image_store: return barrier_shader_image_access;
-    case Usage::color_attachment:
-    case Usage::depth_attachment: return barrier_framebuffer;
-    case Usage::storage_buffer: return barrier_storage_buffer;
-    case Usage::imported: return barrier_none;
-  }
-  return barrier_none;
-}
-
-// Image and SSBO writes are not coherent with later reads in GL; attachment writes are.
-bool writes_incoherently(Usage u) {
-  return u == Usage::image_store || u == Usage::image_load || u == Usage::storage_buffer;
 }
 
 }  // namespace
@@ -141,104 +123,6 @@ void assign_physical_resources(CompileState& s) {
     for (int vi : g.versions)
       s.plan.physical[g.physical].holds.push_back(
           s.graph.resources[g.resource].name + "@" + std::to_string(s.versions[vi].version));
-  }
-}
-
-void build_plan(CompileState& s) {
-  CompiledPlan& plan = s.plan;
-  plan.graph_name = s.graph.name;
-  plan.settings = s.settings;
-  plan.options = s.options;
-  plan.outputs = s.graph.outputs;
-  plan.disabled = s.disabled;
-  auto physical_of_version = [&](int vi) {
-    int g = s.versions[vi].group;
-    return g < 0 ? -1 : s.groups[g].physical;
-  };
-  plan.passes.reserve(s.order.size());
-  for (int pi : s.order) {
-    const ExpandedPass& e = s.passes[pi];
-    PlannedPass p;
-    p.type = e.type->name;
-    p.name = e.name;
-    p.declared_as = e.decl->name;
-    p.iteration = e.iteration;
-    for (const ResourceUse& u : e.uses) {
-      PlannedBinding b;
-      b.slot = u.slot->name;
-      b.access = u.slot->access;
-      b.usage = u.slot->usage;
-      b.resource = u.binding->resource;
-      if (u.read_version >= 0) b.read_version = s.versions[u.read_version].version;
-      if (u.write_version >= 0) b.write_version = s.versions[u.write_version].version;
-      b.physical = physical_of_version(u.write_version >= 0 ? u.write_version : u.read_version);
-      p.bindings.push_back(std::move(b));
-    }
-    for (const ParamDesc& d : e.type->params) {
-      PlannedParam pp;
-      pp.name = d.name;
-      pp.value = d.default_value;
-      for (const ParamBinding& b : e.decl->params) {
-        if (b.name != d.name) continue;
-        pp.reference = b.reference;
-        if (b.reference.empty()) pp.value = b.constant;
-        else if (const ParamValue* v = s.params.get(b.reference)) pp.value = *v;
-      }
-      if (d.type == ParamType::real && std::holds_alternative<int>(pp.value))
-        pp.value = static_cast<double>(std::get<int>(pp.value));
-      p.params.push_back(std::move(pp));
-    }
-    plan.passes.push_back(std::move(p));
-  }
-  for (const ExpandedPass& e : s.passes)
-    if (e.culled) plan.culled.push_back(e.name);
-  // Versions, grouped by resource in declaration order.
-  for (size_t r = 0; r < s.graph.resources.size(); ++r) {
-    for (int vi : s.version_of[r]) {
-      if (vi < 0 || s.versions[vi].group < 0) continue;
-      const VersionState& v = s.versions[vi];
-      ResourceVersion out;
-      out.name = s.graph.resources[r].name;
-      out.version = v.version;
-      out.kind = s.graph.resources[r].kind;
-      out.physical = physical_of_version(vi);
-      out.producer = v.producer >= 0 ? s.passes[v.producer].order : -1;
-      out.first_use = v.first_use;
-      out.last_use = v.last_use;
-      plan.physical_of[out.name] = out.physical;  // ends as the final version's
-      plan.versions.push_back(std::move(out));
-    }
-  }
-}
-
-// Before each pass, for every resource it touches whose last writer wrote incoherently
-// (image store, SSBO), issue the barrier bit matching THIS pass's usage, once per write.
-// Attachment writes followed by sampling need nothing in GL. A persistent resource written
-// incoherently starts the frame dirty (last frame's write).
-void plan_barriers(CompileState& s) {
-  CompiledPlan& plan = s.plan;
-  std::vector<char> dirty(plan.physical.size(), 0);
-  std::vector<std::uint32_t> issued(plan.physical.size(), 0);
-  for (const PlannedPass& p : plan.passes)
-    for (const PlannedBinding& b : p.bindings)
-      if (b.physical >= 0 && b.write_version >= 0 && writes_incoherently(b.usage) &&
-          plan.physical[b.physical].kind == ResourceKind::persistent)
-        dirty[b.physical] = 1;
-  for (PlannedPass& p : plan.passes) {
-    for (const PlannedBinding& b : p.bindings) {
-      std::uint32_t bit = barrier_bit(b.usage);
-      if (b.physical < 0 || !bit || !dirty[b.physical] || (issued[b.physical] & bit)) continue;
-      p.barriers |= bit;
-      issued[b.physical] |= bit;
-      int v = b.read_version >= 0 ? b.read_version : b.write_version;
-      p.barrier_reasons.push_back(b.resource + "@" + std::to_string(v) + ": " +
-                                  barrier_bits_to_string(bit));
-    }
-    for (const PlannedBinding& b : p.bindings) {
-      if (b.physical < 0 || b.write_version < 0) continue;
-      dirty[b.physical] = writes_incoherently(b.usage);
-      issued[b.physical] = 0;
-    }
   }
 }
 

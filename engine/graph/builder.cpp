@@ -6,11 +6,20 @@ PassBuilder& PassBuilder::bind(const std::string& slot, int resource, int versio
   GraphDesc& g = owner_->desc_;
   SlotBinding b;
   b.slot = slot;
-  // An invalid handle binds an empty name: the compiler reports it as an unknown resource.
-  if (resource >= 0 && resource < static_cast<int>(g.resources.size()))
-    b.resource = g.resources[resource].name;
+  // An invalid handle binds a name no resource has: the compiler reports it as unknown.
+  b.resource = resource >= 0 && resource < static_cast<int>(g.resources.size())
+                   ? g.resources[resource].name
+                   : "<invalid handle>";
   b.version = version;
   g.passes[pass_].slots.push_back(std::move(b));
+  last_ = Last::slot;
+  return *this;
+}
+
+PassBuilder& PassBuilder::when(const std::string& condition) {
+  PassDecl& p = owner_->desc_.passes[pass_];
+  if (last_ == Last::slot && !p.slots.empty()) p.slots.back().when = condition;
+  if (last_ == Last::param && !p.params.empty()) p.params.back().when = condition;
   return *this;
 }
 
@@ -31,6 +40,7 @@ PassBuilder& PassBuilder::param(const std::string& name, ParamValue value) {
   else
     p.constant = std::move(value);
   owner_->desc_.passes[pass_].params.push_back(std::move(p));
+  last_ = Last::param;
   return *this;
 }
 
@@ -70,11 +80,11 @@ int GraphBuilder::add_resource(ResourceDecl decl) {
 }
 
 TextureHandle GraphBuilder::texture(const std::string& name, Format format, SizeExpr size) {
-  return {add_resource({name, ResourceKind::texture, format, size, 0, ""}), -1};
+  return {add_resource({name, ResourceKind::texture, format, std::move(size), 0, ""}), -1};
 }
 
 TextureHandle GraphBuilder::persistent(const std::string& name, Format format, SizeExpr size) {
-  return {add_resource({name, ResourceKind::persistent, format, size, 0, ""}), -1};
+  return {add_resource({name, ResourceKind::persistent, format, std::move(size), 0, ""}), -1};
 }
 
 BufferHandle GraphBuilder::buffer(const std::string& name, std::uint64_t bytes) {

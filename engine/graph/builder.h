@@ -17,6 +17,9 @@
 //   b.output(mask);
 //   GraphDesc graph = b.build();
 //
+// A pass parameter left unbound takes the graph parameter of the same name when there is one
+// (implicit binding, graph_desc.h), so `.param("samples", "$samples")` is never needed.
+//
 // Rules: handles are only valid for the builder that made them; a handle names a logical
 // resource, and each write makes a new version (graph_desc.h). `h.at(n)` pins version n.
 // Names passed to the builder must be unique; the compiler reports duplicates.
@@ -59,21 +62,27 @@ class PassBuilder {
   PassBuilder& repeat(int count);
   PassBuilder& repeat(const std::string& reference);  // "$param"
   PassBuilder& enabled(const std::string& condition);  // condition.h grammar
+  // Makes the binding just added (slot or parameter) apply only when `condition` holds; the
+  // first applying binding of a slot or parameter wins (graph_desc.h):
+  //   .write("mask", checker).when("$checkerboard").write("mask", mask)
+  PassBuilder& when(const std::string& condition);
   PassBuilder& side_effect(bool on = true);
 
  private:
   friend class GraphBuilder;
   PassBuilder(GraphBuilder& owner, int pass) : owner_(&owner), pass_(pass) {}
   PassBuilder& bind(const std::string& slot, int resource, int version);
+  enum class Last { none, slot, param };
   GraphBuilder* owner_;
   int pass_;
+  Last last_ = Last::none;
 };
 
 class GraphBuilder {
  public:
   explicit GraphBuilder(std::string name);
   void parameter(ParamDesc desc);
-  TextureHandle texture(const std::string& name, Format format, SizeExpr size);
+  TextureHandle texture(const std::string& name, Format format, SizeExpr size);  // SizeExpr::screen_by("p") for screen/$p
   TextureHandle persistent(const std::string& name, Format format, SizeExpr size);
   BufferHandle buffer(const std::string& name, std::uint64_t bytes);
   ImportedHandle import(const std::string& name);

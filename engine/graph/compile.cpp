@@ -1,5 +1,5 @@
-// compile(): the graph compiler as a pipeline of named stages. Each stage lives in its own
-// function (validate.cpp, expand.cpp, schedule.cpp, assign.cpp) and decides one thing.
+// compile(): the graph compiler as a pipeline of named stages, read top to bottom. Each stage
+// is one function in the file of its name (compile_state.h lists them) and decides one thing.
 #include "graph/compile_state.h"
 
 namespace penumbra::graph {
@@ -20,6 +20,12 @@ int CompileState::find_resource(std::string_view name) const {
   return it == resource_index.end() ? -1 : it->second;
 }
 
+bool CompileState::holds(std::string_view condition) const {
+  if (condition.empty()) return true;
+  auto it = conditions.find(condition);
+  return it != conditions.end() && it->second.valid && it->second.holds;
+}
+
 int CompileState::version_index(int resource, int version) {
   auto& slots = version_of[resource];
   if (static_cast<int>(slots.size()) <= version) slots.resize(version + 1, -1);
@@ -35,7 +41,7 @@ int CompileState::version_index(int resource, int version) {
 
 int CompileState::existing_version(int resource, int version) const {
   const auto& slots = version_of[resource];
-  return version < static_cast<int>(slots.size()) ? slots[version] : -1;
+  return version >= 0 && version < static_cast<int>(slots.size()) ? slots[version] : -1;
 }
 
 }  // namespace detail
@@ -43,10 +49,13 @@ int CompileState::existing_version(int resource, int version) const {
 Checked<CompiledPlan> compile(const GraphDesc& graph, const PassTypeRegistry& registry,
                               const ParameterSet& params, const CompileSettings& settings,
                               const CompileOptions& options) {
-  detail::CompileState s{graph, registry, params, settings, options, {}, {}, {}, {}, {}, {},
-                         {}, {}, {}, {}, {}};
-  // Names -> indices, texture sizes resolved from the settings (screen / shadow).
+  detail::CompileState s(graph, registry, params, settings, options);
+  // Names -> indices; texture sizes resolved from the settings and size parameters.
   detail::index_resources(s);
+  // Every `enabled` / `when` condition parsed, type-checked and evaluated once.
+  detail::evaluate_conditions(s);
+  // Per pass, the bindings that apply for these parameters: chosen by `when`, implicit by name.
+  detail::bind_passes(s);
   // Every declaration error at once: types, slots, formats, sizes, parameters, repeat.
   detail::validate_declarations(s);
   // `enabled` and `repeat` turn declarations into the passes that exist this compile.

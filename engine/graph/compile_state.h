@@ -1,16 +1,39 @@
 #pragma once
 // Internal to the compiler (not installed): the state the stages of compile() pass along.
-// Names become indices once (index_resources) so the later stages touch no strings.
+// Names become indices once (index_resources) so the later stages touch few strings.
 #include <string>
 #include <string_view>
 #include <unordered_map>
 #include <vector>
 
 #include "graph/compiler.h"
+#include "graph/condition.h"
 
 namespace penumbra::graph::detail {
 
-inline constexpr int kMaxVersion = 1024;
+// A condition text of the graph (`enabled`, `when`), parsed and checked once per compile.
+struct ConditionState {
+  bool valid = false;   // parsed and type-checked
+  bool holds = false;   // its value for this compile's parameters (when valid)
+  GraphErrorCode code = GraphErrorCode::bad_condition;
+  std::string problem;  // when !valid
+};
+
+// A declared pass with the bindings that apply for this compile's parameter values
+// (graph_desc.h's binding rule): one slot binding per bound slot, one entry per parameter of
+// the pass type.
+struct BoundParam {
+  const ParamDesc* desc = nullptr;        // the pass type's declaration
+  const ParamBinding* binding = nullptr;  // the applying binding; null: implicit or default
+  const ParamDesc* graph_param = nullptr; // the graph parameter it reads ($ or implicit); null: constant
+};
+
+struct BoundPass {
+  const PassDecl* decl = nullptr;
+  const PassTypeDecl* type = nullptr;  // null: unknown type (reported by validate)
+  std::vector<const SlotBinding*> slots;
+  std::vector<BoundParam> params;
+};
 
 struct ResourceUse {
   const SlotDecl* slot = nullptr;
@@ -21,8 +44,7 @@ struct ResourceUse {
 };
 
 struct ExpandedPass {
-  const PassDecl* decl = nullptr;
-  const PassTypeDecl* type = nullptr;
+  const BoundPass* bound = nullptr;
   std::string name;
   int iteration = 0;
   std::vector<ResourceUse> uses;
@@ -52,6 +74,10 @@ struct VersionGroup {
 };
 
 struct CompileState {
+  CompileState(const GraphDesc& g, const PassTypeRegistry& r, const ParameterSet& p,
+               const CompileSettings& s, const CompileOptions& o)
+      : graph(g), registry(r), params(p), settings(s), options(o) {}
+
   const GraphDesc& graph;
   const PassTypeRegistry& registry;
   const ParameterSet& params;
@@ -61,6 +87,8 @@ struct CompileState {
 
   std::unordered_map<std::string_view, int> resource_index;
   std::vector<int> width, height;  // resolved texture sizes per resource
+  std::unordered_map<std::string_view, ConditionState> conditions;  // by condition text
+  std::vector<BoundPass> bound;    // one per declared pass, declaration order
   std::vector<ExpandedPass> passes;
   std::vector<std::string> disabled;
   std::vector<VersionState> versions;
@@ -71,21 +99,26 @@ struct CompileState {
 
   void error(GraphErrorCode code, const std::string& location, std::string message);
   int find_resource(std::string_view name) const;
+  // A condition evaluate_conditions saw; "" always holds.
+  bool holds(std::string_view condition) const;
   // Index of (resource, version), created on first use.
   int version_index(int resource, int version);
   int existing_version(int resource, int version) const;
 };
 
-// The stages, in the order compile() runs them (compile.cpp documents each).
-void index_resources(CompileState& s);
-void validate_declarations(CompileState& s);
-void expand_passes(CompileState& s);
-void resolve_versions(CompileState& s);
-void cull_passes(CompileState& s);
-void order_passes(CompileState& s);
-void compute_lifetimes(CompileState& s);
-void assign_physical_resources(CompileState& s);
-void plan_barriers(CompileState& s);
-void build_plan(CompileState& s);
+// The stages, in the order compile() runs them; compile.cpp says what each decides, and each
+// lives in the file of its name.
+void index_resources(CompileState& s);              // index.cpp
+void evaluate_conditions(CompileState& s);          // conditions.cpp
+void bind_passes(CompileState& s);                  // bind.cpp
+void validate_declarations(CompileState& s);        // validate.cpp
+void expand_passes(CompileState& s);                // expand.cpp
+void resolve_versions(CompileState& s);             // versions.cpp
+void cull_passes(CompileState& s);                  // cull.cpp
+void order_passes(CompileState& s);                 // order.cpp
+void compute_lifetimes(CompileState& s);            // lifetimes.cpp
+void assign_physical_resources(CompileState& s);    // assign.cpp
+void build_plan(CompileState& s);                   // build_plan.cpp
+void plan_barriers(CompileState& s);                // barriers.cpp
 
 }  // namespace penumbra::graph::detail

@@ -12,6 +12,15 @@
 //    it; with none, version 0, which only imported and persistent resources have (provided
 //    by the executor / last frame). "r@n" reads exactly version n (any producer position).
 //  - A read_write binding "r" reads the latest version n and produces n+1 in place.
+//
+// Binding rule (which binding a slot or parameter gets, for the current parameter values):
+//  - A slot or parameter may have several bindings, each with a `when` condition on structural
+//    parameters (condition.h); the first whose condition holds applies ("" always holds, so it
+//    ends the list). None applying: the slot is unbound.
+//  - A pass parameter with no applying binding binds to the graph parameter of the same name
+//    when there is one (implicit binding), else it takes the pass type's default.
+//  - A `$`-bound parameter's graph declaration must fit the pass type's: range inside the pass
+//    type's range, enum options among its options, the same unit where both name one.
 #include <string>
 #include <vector>
 
@@ -20,14 +29,16 @@
 
 namespace penumbra::graph {
 
-inline constexpr int kMaxRepeat = 64;
+inline constexpr int kMaxRepeat = 64;     // `repeat` count
+inline constexpr int kMaxVersion = 1024;  // `name@N`, and versions a frame may write
 
 // A slot bound to a resource; version -1 = implicit (see the rule above).
 struct SlotBinding {
   std::string slot;
-  std::string resource;
+  std::string resource;  // "" (only with a `when`): the slot stays unbound when chosen
   int version = -1;
   std::string location;  // JSON pointer, e.g. "/passes/2/slots/input"
+  std::string when;      // condition choosing this binding; "" = always
 };
 
 // A pass parameter: a constant, or a reference to a technique parameter ("$name").
@@ -36,6 +47,8 @@ struct ParamBinding {
   ParamValue constant;
   std::string reference;  // technique parameter name without '$'; empty = constant
   std::string location;
+  std::string when;       // condition choosing this binding; "" = always
+  bool unbound = false;   // chosen, this binding leaves the parameter to the implicit/default rule
 };
 
 struct PassDecl {
@@ -52,6 +65,7 @@ struct PassDecl {
 
 struct GraphDesc {
   std::string name;
+  std::string description;              // one paragraph: what the technique is (CLI, sandbox)
   std::string source_file;              // for error messages; "" from C++
   std::vector<ParamDesc> parameters;    // the technique's parameters
   std::vector<ResourceDecl> resources;

@@ -14,11 +14,14 @@ const char* graph_error_code_name(GraphErrorCode code) {
     case GraphErrorCode::read_without_producer: return "read_without_producer";
     case GraphErrorCode::cycle: return "cycle";
     case GraphErrorCode::two_writers: return "two_writers";
+    case GraphErrorCode::version_out_of_range: return "version_out_of_range";
     case GraphErrorCode::format_not_accepted: return "format_not_accepted";
     case GraphErrorCode::size_mismatch: return "size_mismatch";
     case GraphErrorCode::param_unknown: return "param_unknown";
     case GraphErrorCode::param_wrong_type: return "param_wrong_type";
     case GraphErrorCode::param_out_of_range: return "param_out_of_range";
+    case GraphErrorCode::param_range_mismatch: return "param_range_mismatch";
+    case GraphErrorCode::param_not_structural: return "param_not_structural";
     case GraphErrorCode::unknown_param_reference: return "unknown_param_reference";
     case GraphErrorCode::repeat_out_of_range: return "repeat_out_of_range";
     case GraphErrorCode::bad_condition: return "bad_condition";

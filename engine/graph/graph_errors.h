@@ -21,11 +21,14 @@ enum class GraphErrorCode {
   read_without_producer,
   cycle,
   two_writers,          // two passes produce one version
+  version_out_of_range, // name@N or a write past kMaxVersion
   format_not_accepted,  // also a resource kind the slot cannot take
   size_mismatch,        // within a same-size group
   param_unknown,        // pass type has no such parameter
   param_wrong_type,
   param_out_of_range,
+  param_range_mismatch,     // a $-bound graph parameter's range / options / unit exceed the pass type's
+  param_not_structural,     // enabled / when / repeat / size read a parameter that does not recompile
   unknown_param_reference,  // "$x" with no technique parameter x
   repeat_out_of_range,
   bad_condition,            // `enabled` does not parse or has the wrong type

@@ -16,7 +16,4 @@ inline constexpr int kMaxJsonDepth = 256;
 Checked<GraphDesc> parse_graph_json(std::string_view text, const std::string& file_name = "");
 Checked<GraphDesc> load_graph_json(const std::string& path);
 
-// 1-based line and column of a byte offset (as reported by a JSON parser).
-void byte_offset_to_line_col(std::string_view text, size_t offset, int& line, int& column);
-
 }  // namespace penumbra::graph

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the two JSON translation units (graph_json.cpp, parameters_json.cpp): JSON value
-// -> ParamValue with range checks, and the nesting guard run before nlohmann parses.
+// -> ParamValue with range checks (util/json_text.h guards the text before nlohmann parses it).
 #include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -59,30 +59,6 @@ inline std::optional<ParamType> parse_param_type(std::string_view s) {
   if (s == "float") return ParamType::real;
   if (s == "enum") return ParamType::enumeration;
   return std::nullopt;
-}
-
-// True when brackets outside strings nest deeper than max_depth; offset = where.
-inline bool json_nesting_exceeds(std::string_view text, int max_depth, size_t& offset) {
-  int depth = 0;
-  bool in_string = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    char c = text[i];
-    if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
-      continue;
-    }
-    if (c == '"') in_string = true;
-    else if (c == '[' || c == '{') {
-      if (++depth > max_depth) {
-        offset = i;
-        return true;
-      }
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return false;
 }
 
 }  // namespace penumbra::graph

@@ -3,19 +3,24 @@
 
 #include "graph/json_values.h"
 #include "graph/parameters.h"
+#include "util/json_text.h"
 
 namespace penumbra::graph {
 
 using Json = nlohmann::ordered_json;
 
 Status ParameterSet::apply_json(std::string_view json_text) {
-  size_t offset = 0;
-  if (json_nesting_exceeds(json_text, 64, offset)) return make_error("parameter JSON nested too deeply");
+  if (std::optional<JsonTextProblem> p = scan_json_text(json_text, 64)) {
+    Error e = make_error("parameter JSON: " + p->message);
+    e.line = p->line;
+    e.column = p->column;
+    return e;
+  }
   Json root;
   try {
     root = Json::parse(json_text.begin(), json_text.end());
   } catch (const std::exception& e) {
-    return make_error(std::string("malformed parameter JSON: ") + e.what());
+    return make_error("malformed parameter JSON: " + shortened(e.what(), 200));
   }
   if (!root.is_object()) return make_error("parameter JSON must be an object {\"name\": value}");
   // Validate everything on a copy, then commit: all-or-nothing.

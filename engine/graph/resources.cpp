@@ -1,6 +1,8 @@
 #include "graph/resources.h"
 
 #include <algorithm>
+#include <string>
+#include <cctype>
 #include <charconv>
 
 namespace penumbra::graph {
@@ -54,13 +56,21 @@ std::optional<ResourceKind> parse_resource_kind(std::string_view name) {
 
 std::optional<SizeExpr> SizeExpr::parse(std::string_view text) {
   auto with_divisor = [&](std::string_view base, Base b) -> std::optional<SizeExpr> {
-    if (text == base) return SizeExpr{b, 1, 0, 0};
+    if (text == base) return SizeExpr{b, 1, 0, 0, {}};
     if (text.size() > base.size() + 1 && text.substr(0, base.size()) == base &&
         text[base.size()] == '/') {
+      std::string_view divisor = text.substr(base.size() + 1);
+      if (divisor.size() > 1 && divisor[0] == '$') {
+        std::string_view name = divisor.substr(1);
+        bool ok = std::all_of(name.begin(), name.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+        });
+        if (!ok) return std::nullopt;
+        return SizeExpr{b, 1, 0, 0, std::string(name)};
+      }
       int div = 0;
-      if (!parse_int(text.substr(base.size() + 1), div) || div < 1 || div > 64)
-        return std::nullopt;
-      return SizeExpr{b, div, 0, 0};
+      if (!parse_int(divisor, div) || div < 1 || div > kMaxSizeDivisor) return std::nullopt;
+      return SizeExpr{b, div, 0, 0, {}};
     }
     return std::nullopt;
   };
@@ -69,23 +79,26 @@ std::optional<SizeExpr> SizeExpr::parse(std::string_view text) {
   size_t x = text.find('x');
   if (x == std::string_view::npos) return std::nullopt;
   int w = 0, h = 0;
-  // 16384 texels: the largest texture GL 4.5 implementations commonly allow.
   if (!parse_int(text.substr(0, x), w) || !parse_int(text.substr(x + 1), h) || w < 1 ||
-      h < 1 || w > 16384 || h > 16384)
+      h < 1 || w > kMaxTextureSize || h > kMaxTextureSize)
     return std::nullopt;
   return SizeExpr::fixed(w, h);
 }
 
 std::string SizeExpr::to_string() const {
+  std::string div = !divisor_reference.empty() ? "/$" + divisor_reference
+                    : divisor == 1             ? ""
+                                               : "/" + std::to_string(divisor);
   switch (base) {
-    case Base::screen: return divisor == 1 ? "screen" : "screen/" + std::to_string(divisor);
-    case Base::shadow: return divisor == 1 ? "shadow" : "shadow/" + std::to_string(divisor);
+    case Base::screen: return "screen" + div;
+    case Base::shadow: return "shadow" + div;
     case Base::fixed: return std::to_string(width) + "x" + std::to_string(height);
   }
   return "?";
 }
 
-void SizeExpr::resolve(const CompileSettings& s, int& w, int& h) const {
+void SizeExpr::resolve(const CompileSettings& s, int divisor, int& w, int& h) const {
+  divisor = std::max(divisor, 1);
   switch (base) {
     case Base::screen: w = s.screen_w / divisor; h = s.screen_h / divisor; break;
     case Base::shadow: w = h = s.shadow_size / divisor; break;

@@ -3,6 +3,7 @@
 // compile time, and the four kinds of resource. No GL here: the executor maps Format to GL.
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 
@@ -24,6 +25,9 @@ enum class ResourceKind { texture, buffer, imported, persistent };
 const char* resource_kind_name(ResourceKind kind);
 std::optional<ResourceKind> parse_resource_kind(std::string_view name);
 
+inline constexpr int kMaxSizeDivisor = 64;    // screen/N, shadow/N
+inline constexpr int kMaxTextureSize = 16384;  // texels per side: what GL 4.5 implementations commonly allow
+
 // Compile-time sizes, in pixels / texels.
 struct CompileSettings {
   int screen_w = 1920;
@@ -31,20 +35,26 @@ struct CompileSettings {
   int shadow_size = 2048;  // shadow map is shadow_size x shadow_size texels
 };
 
-// `screen`, `screen/2`, `screen/4`, `shadow`, `shadow/2` (any divisor 1..64) or `WxH`.
+// `screen`, `screen/2`, `screen/4`, `shadow`, `shadow/2` (any divisor 1..64), a divisor given
+// by a structural int parameter (`screen/$mask_divisor`), or `WxH`.
 struct SizeExpr {
   enum class Base { screen, shadow, fixed } base = Base::screen;
   int divisor = 1;
-  int width = 0, height = 0;  // fixed only
+  int width = 0, height = 0;      // fixed only
+  std::string divisor_reference;  // parameter name without '$'; overrides `divisor` when set
 
-  static SizeExpr screen(int div = 1) { return {Base::screen, div, 0, 0}; }
-  static SizeExpr shadow(int div = 1) { return {Base::shadow, div, 0, 0}; }
-  static SizeExpr fixed(int w, int h) { return {Base::fixed, 1, w, h}; }
+  static SizeExpr screen(int div = 1) { return {Base::screen, div, 0, 0, {}}; }
+  static SizeExpr shadow(int div = 1) { return {Base::shadow, div, 0, 0, {}}; }
+  static SizeExpr fixed(int w, int h) { return {Base::fixed, 1, w, h, {}}; }
+  // `screen/$name` or `shadow/$name`.
+  static SizeExpr screen_by(std::string parameter) { return {Base::screen, 1, 0, 0, std::move(parameter)}; }
+  static SizeExpr shadow_by(std::string parameter) { return {Base::shadow, 1, 0, 0, std::move(parameter)}; }
 
   static std::optional<SizeExpr> parse(std::string_view text);
   std::string to_string() const;
-  // Integer division, never below 1 texel.
-  void resolve(const CompileSettings& s, int& w, int& h) const;
+  // Integer division by `divisor` (the compiler passes the referenced parameter's value when
+  // divisor_reference is set), never below 1 texel.
+  void resolve(const CompileSettings& s, int divisor, int& w, int& h) const;
 };
 
 struct ResourceDecl {

@@ -1,9 +1,11 @@
-// Stages 1-2: index resources and validate declarations. Validation never stops at the first
-// error: a technique author fixing a graph wants the whole list.
+// Stage: validate declarations. Never stops at the first error: a technique author fixing a
+// graph wants the whole list. Every binding is checked, chosen or not (a typo in a branch the
+// defaults do not take is still a typo); what depends on the choice (required slots, sizes)
+// is checked on the bindings bind_passes chose.
 #include <algorithm>
+#include <sstream>
 
 #include "graph/compile_state.h"
-#include "graph/condition.h"
 
 namespace penumbra::graph::detail {
 
@@ -39,86 +41,156 @@ bool value_has_type(ParamType type, const ParamValue& v) {
   return false;
 }
 
-void validate_slots(CompileState& s, const PassDecl& p, const PassTypeDecl& type) {
-  const std::string pass_loc = loc(p.location, "pass '" + p.name + "'");
-  for (const SlotBinding& b : p.slots) {
-    const std::string where = loc(b.location, pass_loc);
-    const SlotDecl* slot = type.find_slot(b.slot);
-    if (!slot) {
-      std::string valid;
-      for (const auto& sd : type.slots) valid += (valid.empty() ? "" : ", ") + sd.name;
-      s.error(GraphErrorCode::unknown_slot, where,
-              describe(p, b.slot, b.resource) + ": pass type '" + p.type +
-                  "' has no slot '" + b.slot + "'; slots: " + valid);
-      continue;
-    }
-    int r = s.find_resource(b.resource);
-    if (r < 0) {
+std::string range_text(double min, double max) {
+  std::ostringstream s;
+  s << "[" << min << ", " << max << "]";
+  return s.str();
+}
+
+// Where the graph declares parameter `name`: "/parameters/N" in a file, its name otherwise.
+std::string param_location(const CompileState& s, const std::string& name) {
+  const auto& ps = s.graph.parameters;
+  for (size_t i = 0; i < ps.size(); ++i)
+    if (ps[i].name == name)
+      return s.graph.source_file.empty() ? "parameter '" + name + "'" : "/parameters/" + std::to_string(i);
+  return "parameter '" + name + "'";
+}
+
+// Why a graph parameter bound to a pass parameter could carry a value the pass does not
+// accept (the pass type's range, options, unit), or "" when every value it allows fits.
+std::string disagreement(const ParamDesc& pass, const ParamDesc& graph) {
+  if (pass.type == ParamType::enumeration) {
+    for (const std::string& o : graph.options)
+      if (std::find(pass.options.begin(), pass.options.end(), o) == pass.options.end())
+        return "option \"" + o + "\" is not one the pass type accepts";
+  } else if (pass.type != ParamType::boolean && pass.has_range()) {
+    if (!graph.has_range())
+      return "it has no range; the pass type accepts " + range_text(pass.min, pass.max);
+    if (graph.min < pass.min || graph.max > pass.max)
+      return "it allows " + range_text(graph.min, graph.max) + ", the pass type accepts " +
+             range_text(pass.min, pass.max);
+  }
+  if (!pass.unit.empty() && !graph.unit.empty() && pass.unit != graph.unit)
+    return "its unit is '" + graph.unit + "', the pass type's is '" + pass.unit + "'";
+  return "";
+}
+
+void validate_slot_binding(CompileState& s, const PassDecl& p, const PassTypeDecl& type,
+                           const SlotBinding& b, const std::string& pass_loc) {
+  const std::string where = loc(b.location, pass_loc);
+  const SlotDecl* slot = type.find_slot(b.slot);
+  if (!slot) {
+    std::string valid;
+    for (const auto& sd : type.slots) valid += (valid.empty() ? "" : ", ") + sd.name;
+    s.error(GraphErrorCode::unknown_slot, where,
+            describe(p, b.slot, b.resource) + ": pass type '" + p.type + "' has no slot '" +
+                b.slot + "'; slots: " + valid);
+    return;
+  }
+  if (b.resource.empty()) {
+    if (b.when.empty())
       s.error(GraphErrorCode::unknown_resource, where,
-              describe(p, b.slot, b.resource) + ": no resource named '" + b.resource +
-                  "' is declared");
-      continue;
-    }
-    if (b.version > kMaxVersion || b.version < -1) {
-      s.error(GraphErrorCode::unknown_resource, where,
-              describe(p, b.slot, b.resource) + ": version " + std::to_string(b.version) +
-                  " out of range 0.." + std::to_string(kMaxVersion));
-    }
-    const ResourceDecl& res = s.graph.resources[r];
-    if (!slot_accepts_kind(slot->kind, res.kind)) {
-      s.error(GraphErrorCode::format_not_accepted, where,
-              describe(p, b.slot, b.resource) + ": slot takes a " +
-                  slot_kind_name(slot->kind) + ", resource is " +
-                  resource_kind_name(res.kind));
-      continue;
-    }
-    bool textured = res.kind == ResourceKind::texture || res.kind == ResourceKind::persistent;
-    if (textured && !slot->formats.empty() &&
-        std::find(slot->formats.begin(), slot->formats.end(), res.format) == slot->formats.end()) {
-      std::string accepted;
-      for (Format f : slot->formats) accepted += (accepted.empty() ? "" : ", ") + std::string(format_name(f));
-      s.error(GraphErrorCode::format_not_accepted, where,
-              describe(p, b.slot, b.resource) + ": format " + format_name(res.format) +
-                  " not accepted; slot accepts " + accepted);
-    }
+              describe(p, b.slot, "") + ": binding names no resource");
+    return;  // a chosen "unbound"
+  }
+  int r = s.find_resource(b.resource);
+  if (r < 0) {
+    s.error(GraphErrorCode::unknown_resource, where,
+            describe(p, b.slot, b.resource) + ": no resource named '" + b.resource + "' is declared");
+    return;
+  }
+  if (b.version > kMaxVersion || b.version < -1) {
+    s.error(GraphErrorCode::version_out_of_range, where,
+            describe(p, b.slot, b.resource) + ": version " + std::to_string(b.version) +
+                " out of range 0.." + std::to_string(kMaxVersion));
+  }
+  const ResourceDecl& res = s.graph.resources[r];
+  if (!slot_accepts_kind(slot->kind, res.kind)) {
+    s.error(GraphErrorCode::format_not_accepted, where,
+            describe(p, b.slot, b.resource) + ": slot takes a " + slot_kind_name(slot->kind) +
+                ", resource is " + resource_kind_name(res.kind));
+    return;
+  }
+  bool textured = res.kind == ResourceKind::texture || res.kind == ResourceKind::persistent;
+  if (textured && !slot->formats.empty() &&
+      std::find(slot->formats.begin(), slot->formats.end(), res.format) == slot->formats.end()) {
+    std::string accepted;
+    for (Format f : slot->formats) accepted += (accepted.empty() ? "" : ", ") + std::string(format_name(f));
+    s.error(GraphErrorCode::format_not_accepted, where,
+            describe(p, b.slot, b.resource) + ": format " + format_name(res.format) +
+                " not accepted; slot accepts " + accepted);
+  }
+}
+
+// Every declared binding, then what bind_passes chose: required slots and same-size groups.
+void validate_slots(CompileState& s, const BoundPass& bp, const std::string& pass_loc) {
+  const PassDecl& p = *bp.decl;
+  const PassTypeDecl& type = *bp.type;
+  for (size_t i = 0; i < p.slots.size(); ++i) {
+    const SlotBinding& b = p.slots[i];
+    validate_slot_binding(s, p, type, b, pass_loc);
+    // A binding after an unconditional one of the same slot can never apply.
+    for (size_t j = 0; j < i; ++j)
+      if (p.slots[j].slot == b.slot && p.slots[j].when.empty()) {
+        s.error(GraphErrorCode::duplicate_name, loc(b.location, pass_loc),
+                describe(p, b.slot, b.resource) + ": slot is already bound (unconditionally)");
+        break;
+      }
   }
   for (const SlotDecl& sd : type.slots) {
     if (!sd.required) continue;
-    bool bound = std::any_of(p.slots.begin(), p.slots.end(),
-                             [&](const SlotBinding& b) { return b.slot == sd.name; });
+    bool bound = std::any_of(bp.slots.begin(), bp.slots.end(),
+                             [&](const SlotBinding* b) { return b->slot == sd.name; });
     if (!bound)
       s.error(GraphErrorCode::missing_required_slot, pass_loc,
-              describe(p, sd.name, "") + ": required slot is not bound");
+              describe(p, sd.name, "") + ": required slot is not bound" +
+                  (p.slots.empty() ? "" : " for these parameter values"));
   }
-  // Same-size groups: every bound texture of a group resolves to one size.
   for (const auto& group : type.same_size_groups) {
     const SlotBinding* first = nullptr;
     int fw = 0, fh = 0;
-    for (const std::string& slot_name : group) {
-      for (const SlotBinding& b : p.slots) {
-        if (b.slot != slot_name) continue;
-        int r = s.find_resource(b.resource);
-        if (r < 0 || s.width[r] == 0) continue;
-        if (!first) {
-          first = &b;
-          fw = s.width[r];
-          fh = s.height[r];
-        } else if (s.width[r] != fw || s.height[r] != fh) {
-          s.error(GraphErrorCode::size_mismatch, loc(b.location, pass_loc),
-                  describe(p, b.slot, b.resource) + ": size " + std::to_string(s.width[r]) +
-                      "x" + std::to_string(s.height[r]) + " differs from slot '" +
-                      first->slot + "' (resource '" + first->resource + "', " +
-                      std::to_string(fw) + "x" + std::to_string(fh) +
-                      "); these slots must have the same size");
-        }
+    for (const SlotBinding* b : bp.slots) {
+      if (std::find(group.begin(), group.end(), b->slot) == group.end()) continue;
+      int r = s.find_resource(b->resource);
+      if (r < 0 || s.width[r] == 0) continue;
+      if (!first) {
+        first = b;
+        fw = s.width[r];
+        fh = s.height[r];
+      } else if (s.width[r] != fw || s.height[r] != fh) {
+        s.error(GraphErrorCode::size_mismatch, loc(b->location, pass_loc),
+                describe(p, b->slot, b->resource) + ": size " + std::to_string(s.width[r]) + "x" +
+                    std::to_string(s.height[r]) + " differs from slot '" + first->slot +
+                    "' (resource '" + first->resource + "', " + std::to_string(fw) + "x" +
+                    std::to_string(fh) + "); these slots must have the same size");
       }
     }
   }
 }
 
-void validate_params(CompileState& s, const PassDecl& p, const PassTypeDecl& type) {
-  const std::string pass_loc = loc(p.location, "pass '" + p.name + "'");
-  for (const ParamBinding& b : p.params) {
+// A `$`-bound pass parameter (explicitly or by name) must be able to take every value its
+// graph parameter allows.
+void validate_reference(CompileState& s, const PassDecl& p, const ParamDesc& desc,
+                        const ParamDesc& graph_param, const std::string& where, bool implicit) {
+  const std::string who = "pass '" + p.name + "', parameter '" + desc.name + "'";
+  const std::string ref = "'$" + graph_param.name + "' (" + param_location(s, graph_param.name) + ")";
+  if (!value_has_type(desc.type, graph_param.default_value)) {
+    s.error(GraphErrorCode::param_wrong_type, where,
+            who + ": expects " + param_type_name(desc.type) + ", " + ref + " is " +
+                param_type_name(graph_param.type) +
+                (implicit ? "; it binds by name: bind the parameter explicitly" : ""));
+    return;
+  }
+  if (std::string why = disagreement(desc, graph_param); !why.empty())
+    s.error(GraphErrorCode::param_range_mismatch, where,
+            who + (implicit ? " (bound by name)" : "") + " takes " + ref + ", but " + why);
+}
+
+void validate_params(CompileState& s, const BoundPass& bp, const std::string& pass_loc) {
+  const PassDecl& p = *bp.decl;
+  const PassTypeDecl& type = *bp.type;
+  for (size_t i = 0; i < p.params.size(); ++i) {
+    const ParamBinding& b = p.params[i];
     const std::string where = loc(b.location, pass_loc);
     const std::string who = "pass '" + p.name + "', parameter '" + b.name + "'";
     const ParamDesc* desc = type.find_param(b.name);
@@ -130,99 +202,77 @@ void validate_params(CompileState& s, const PassDecl& p, const PassTypeDecl& typ
                   (valid.empty() ? "(none)" : valid));
       continue;
     }
-    if (!b.reference.empty()) {
-      const ParamDesc* tech = s.params.find(b.reference);
-      if (!tech) {
-        s.error(GraphErrorCode::unknown_param_reference, where,
-                who + ": '$" + b.reference + "' is not a parameter of graph '" +
-                    s.graph.name + "'");
-      } else if (!value_has_type(desc->type, tech->default_value)) {
-        s.error(GraphErrorCode::param_wrong_type, where,
-                who + ": expects " + param_type_name(desc->type) + ", '$" + b.reference +
-                    "' is " + param_type_name(tech->type));
+    for (size_t j = 0; j < i; ++j)
+      if (p.params[j].name == b.name && p.params[j].when.empty()) {
+        s.error(GraphErrorCode::duplicate_name, where, who + ": already bound (unconditionally)");
+        break;
       }
+    if (b.unbound) continue;
+    if (!b.reference.empty()) {
+      if (const ParamDesc* graph_param = s.params.find(b.reference))
+        validate_reference(s, p, *desc, *graph_param, where, false);
+      else
+        s.error(GraphErrorCode::unknown_param_reference, where,
+                who + ": '$" + b.reference + "' is not a parameter of graph '" + s.graph.name + "'");
       continue;
     }
     if (!value_has_type(desc->type, b.constant)) {
       s.error(GraphErrorCode::param_wrong_type, where,
-              who + ": expects " + param_type_name(desc->type) + ", got " +
-                  param_value_to_string(b.constant));
+              who + ": expects " + param_type_name(desc->type) + ", got " + param_value_to_string(b.constant));
     } else if (Status st = check_param_value(*desc, b.constant); !st) {
       s.error(GraphErrorCode::param_out_of_range, where, who + ": " + st.error().message);
     }
   }
+  for (const BoundParam& bound : bp.params)
+    if (!bound.binding && bound.graph_param)
+      validate_reference(s, p, *bound.desc, *bound.graph_param, pass_loc + "/params", true);
 }
 
-void validate_repeat_and_enabled(CompileState& s, const PassDecl& p) {
-  const std::string pass_loc = loc(p.location, "pass '" + p.name + "'");
-  if (!p.repeat_reference.empty()) {
-    const ParamDesc* d = s.params.find(p.repeat_reference);
-    if (!d) {
-      s.error(GraphErrorCode::unknown_param_reference, pass_loc + "/repeat",
-              "pass '" + p.name + "': repeat '$" + p.repeat_reference +
-                  "' is not a parameter of graph '" + s.graph.name + "'");
-    } else if (d->type != ParamType::integer) {
-      s.error(GraphErrorCode::param_wrong_type, pass_loc + "/repeat",
-              "pass '" + p.name + "': repeat '$" + p.repeat_reference + "' must be int, is " +
-                  param_type_name(d->type));
-    } else {
-      int n = s.params.get_int(p.repeat_reference);
-      if (n < 1 || n > kMaxRepeat)
-        s.error(GraphErrorCode::repeat_out_of_range, pass_loc + "/repeat",
-                "pass '" + p.name + "': repeat '$" + p.repeat_reference + "' = " +
-                    std::to_string(n) + " is out of range [1, " + std::to_string(kMaxRepeat) + "]");
-    }
-  } else if (p.repeat < 1 || p.repeat > kMaxRepeat) {
-    s.error(GraphErrorCode::repeat_out_of_range, pass_loc + "/repeat",
-            "pass '" + p.name + "': repeat " + std::to_string(p.repeat) +
-                " is out of range [1, " + std::to_string(kMaxRepeat) + "]");
+void validate_repeat(CompileState& s, const PassDecl& p, const std::string& pass_loc) {
+  const std::string where = pass_loc + "/repeat";
+  const std::string limit = "[1, " + std::to_string(kMaxRepeat) + "]";
+  if (p.repeat_reference.empty()) {
+    if (p.repeat < 1 || p.repeat > kMaxRepeat)
+      s.error(GraphErrorCode::repeat_out_of_range, where,
+              "pass '" + p.name + "': repeat " + std::to_string(p.repeat) + " is out of range " + limit);
+    return;
   }
-  if (!p.enabled.empty()) {
-    Result<Condition> c = Condition::parse(p.enabled);
-    Status st = c ? c->check(s.params) : Status{c.error()};
-    if (!st) {
-      bool unknown = st.error().message.find("unknown parameter") != std::string::npos;
-      s.error(unknown ? GraphErrorCode::unknown_param_reference : GraphErrorCode::bad_condition,
-              pass_loc + "/enabled", "pass '" + p.name + "': " + st.error().message);
-    }
+  const std::string who = "pass '" + p.name + "': repeat '$" + p.repeat_reference + "'";
+  const ParamDesc* d = s.params.find(p.repeat_reference);
+  if (!d) {
+    s.error(GraphErrorCode::unknown_param_reference, where,
+            who + " is not a parameter of graph '" + s.graph.name + "'");
+  } else if (d->type != ParamType::integer) {
+    s.error(GraphErrorCode::param_wrong_type, where, who + " must be int, is " + param_type_name(d->type));
+  } else if (!d->structural) {
+    s.error(GraphErrorCode::param_not_structural, where,
+            who + " is not structural: the plan would not be rebuilt when it changes");
+  } else if (!d->has_range() || d->min < 1 || d->max > kMaxRepeat) {
+    s.error(GraphErrorCode::repeat_out_of_range, where,
+            who + " must have a range inside " + limit + ", has " +
+                (d->has_range() ? range_text(d->min, d->max) : std::string("none")));
   }
 }
 
 }  // namespace
 
-void index_resources(CompileState& s) {
-  const auto& res = s.graph.resources;
-  s.resource_index.reserve(res.size());
-  s.width.assign(res.size(), 0);
-  s.height.assign(res.size(), 0);
-  s.version_of.assign(res.size(), {});
-  for (size_t i = 0; i < res.size(); ++i) {
-    auto [it, inserted] = s.resource_index.emplace(res[i].name, static_cast<int>(i));
-    if (!inserted)
-      s.error(GraphErrorCode::duplicate_name, loc(res[i].location, "resource '" + res[i].name + "'"),
-              "resource '" + res[i].name + "' is declared twice");
-    if (res[i].kind == ResourceKind::texture || res[i].kind == ResourceKind::persistent)
-      res[i].size.resolve(s.settings, s.width[i], s.height[i]);
-  }
-}
-
 void validate_declarations(CompileState& s) {
   std::unordered_map<std::string_view, int> pass_names;
-  for (const PassDecl& p : s.graph.passes) {
+  for (const BoundPass& bp : s.bound) {
+    const PassDecl& p = *bp.decl;
+    const std::string pass_loc = loc(p.location, "pass '" + p.name + "'");
     if (!pass_names.emplace(p.name, 0).second)
-      s.error(GraphErrorCode::duplicate_name, loc(p.location, "pass '" + p.name + "'"),
-              "pass '" + p.name + "' is declared twice");
-    const PassTypeDecl* type = s.registry.find(p.type);
-    if (!type) {
+      s.error(GraphErrorCode::duplicate_name, pass_loc, "pass '" + p.name + "' is declared twice");
+    if (!bp.type) {
       std::string known;
       for (const auto& n : s.registry.names()) known += (known.empty() ? "" : ", ") + n;
-      s.error(GraphErrorCode::unknown_pass_type, loc(p.location, "pass '" + p.name + "'"),
+      s.error(GraphErrorCode::unknown_pass_type, pass_loc,
               "pass '" + p.name + "': unknown pass type '" + p.type + "'; known: " + known);
     } else {
-      validate_slots(s, p, *type);
-      validate_params(s, p, *type);
+      validate_slots(s, bp, pass_loc);
+      validate_params(s, bp, pass_loc);
     }
-    validate_repeat_and_enabled(s, p);
+    validate_repeat(s, p, pass_loc);
   }
   for (size_t i = 0; i < s.graph.outputs.size(); ++i)
     if (s.find_resource(s.graph.outputs[i]) < 0)

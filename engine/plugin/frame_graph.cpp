@@ -14,7 +14,22 @@ bool same_decl(const graph::ResourceDecl& a, const graph::ResourceDecl& b) {
   return a.format == b.format && a.size.to_string() == b.size.to_string();
 }
 
+constexpr const char* kFrameResources[] = {"scene", "camera", "light", "gbuffer_depth",
+                                           "gbuffer_normal", "gbuffer_position", "gbuffer_albedo"};
+
 }  // namespace
+
+bool reads_frame_resources(const graph::GraphDesc& graph) {
+  for (const graph::PassDecl& p : graph.passes)
+    for (const graph::SlotBinding& b : p.slots) {
+      bool frame = std::find(std::begin(kFrameResources), std::end(kFrameResources), b.resource) !=
+                   std::end(kFrameResources);
+      bool declared = std::any_of(graph.resources.begin(), graph.resources.end(),
+                                  [&](const graph::ResourceDecl& r) { return r.name == b.resource; });
+      if (frame && !declared) return true;
+    }
+  return false;
+}
 
 Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique) {
   using namespace graph;
@@ -60,6 +75,7 @@ Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique) 
     return e;
   }
   frame.parameters = technique.parameters;
+  frame.description = technique.description;
   frame.source_file = technique.source_file;
   frame.passes.insert(frame.passes.end(), technique.passes.begin(), technique.passes.end());
 

@@ -26,4 +26,8 @@ inline constexpr const char* kColor = "color";
 // declaration (same name, different kind/format/size) is an error naming the resource.
 Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique);
 
+// A technique graph: one that binds a resource the frame provides (scene, camera, light,
+// gbuffer_*) without declaring it. `penumbra graph` composes such a graph by itself.
+bool reads_frame_resources(const graph::GraphDesc& graph);
+
 }  // namespace penumbra::plugin

@@ -5,9 +5,11 @@
 // lighting pass consumes (frame_graph.h).
 //
 //   registry.add({.name = "pcss",
-//                 .description = "Percentage-closer soft shadows (Fernando 2005)",
 //                 .graph_file = "techniques/baseline/pcss.json",
 //                 .register_passes = register_pcss_passes});
+//
+// The technique's description and parameters are in its graph JSON only ("description",
+// "parameters"): the CLI and the sandbox read them from there.
 //
 // graph_file is repository-relative and read through the shader file system, so it comes from
 // the source tree in development and from the embedded copy in a bundled binary.
@@ -23,7 +25,6 @@ namespace penumbra::plugin {
 
 struct Technique {
   std::string name;
-  std::string description;
   std::string graph_file;
   std::function<void(exec::PassLibrary&)> register_passes;  // may be empty
 };

@@ -22,4 +22,8 @@ Error make_error(std::string message, ErrorKind kind) {
   return e;
 }
 
+std::string shortened(std::string_view text, size_t max) {
+  return text.size() <= max ? std::string(text) : std::string(text.substr(0, max)) + "...";
+}
+
 }  // namespace penumbra

@@ -7,6 +7,7 @@
 //   use(*t);
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -31,6 +32,10 @@ struct Error {
 };
 
 Error make_error(std::string message, ErrorKind kind = ErrorKind::bad_input);
+
+// `text` cut to `max` characters with "..." appended: input echoed in a message stays one short
+// line whatever the input is.
+std::string shortened(std::string_view text, size_t max = 60);
 
 // A value or an Error; deliberately tiny (std::expected is C++23).
 template <class T>

@@ -135,6 +135,15 @@ Status SandboxController::set_shadow_size(int texels) {
 
 // --- technique and parameters -----------------------------------------------------------------
 
+const std::string& SandboxController::technique_description(const std::string& name) const {
+  auto it = descriptions_.find(name);
+  if (it != descriptions_.end()) return it->second;
+  std::string text;
+  if (const plugin::Technique* t = registry_.find(name))
+    if (auto g = plugin::load_technique_graph(*t)) text = g->description;
+  return descriptions_.emplace(name, std::move(text)).first->second;
+}
+
 Status SandboxController::set_technique(const std::string& name) {
   return note(primary_->set_technique(name));
 }

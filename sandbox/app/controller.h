@@ -17,6 +17,7 @@
 // and swapping one never recompiles the other. The cost is a second scene upload and a second
 // G-buffer per frame, which only compare mode pays.
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -71,7 +72,8 @@ class SandboxController {
 
   // --- technique and parameters -------------------------------------------------------------
   std::vector<std::string> technique_names() const { return registry_.names(); }
-  const plugin::Technique* technique_info(const std::string& name) const { return registry_.find(name); }
+  // The description in the technique's graph JSON (the one the CLI prints); read once per name.
+  const std::string& technique_description(const std::string& name) const;
   Status set_technique(const std::string& name);
   plugin::TechniqueSession& session() { return *primary_; }
   plugin::TechniqueSession* secondary() { return secondary_.get(); }
@@ -122,6 +124,7 @@ class SandboxController {
   std::string default_compare_partner() const;
 
   const plugin::TechniqueRegistry& registry_;
+  mutable std::map<std::string, std::string> descriptions_;
   const exec::PassLibrary& library_;
   std::unique_ptr<plugin::TechniqueSession> primary_;
   std::unique_ptr<plugin::TechniqueSession> secondary_;

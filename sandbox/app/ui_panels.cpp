@@ -124,12 +124,11 @@ void technique_panel(SandboxController& c, UiState& ui) {
   if (ImGui::BeginCombo("technique", s.technique().c_str())) {
     for (const std::string& n : c.technique_names()) {
       if (ImGui::Selectable(n.c_str(), n == s.technique())) (void)c.set_technique(n);
-      if (const plugin::Technique* t = c.technique_info(n)) tooltip(t->description);
+      tooltip(c.technique_description(n));
     }
     ImGui::EndCombo();
   }
-  if (const plugin::Technique* t = c.technique_info(s.technique()))
-    ImGui::TextWrapped("%s", t->description.c_str());
+  ImGui::TextWrapped("%s", s.graph().description.c_str());
   for (const graph::ParamDesc& d : s.params().descs()) parameter_widget(c, d);
   if (ImGui::Button("reset all")) (void)c.reset_param("all");
   ImGui::SameLine();

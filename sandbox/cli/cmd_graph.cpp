@@ -18,8 +18,10 @@ namespace {
 
 const char* kHelp =
     "usage: penumbra graph FILE.json [--plan] [--dot OUT.dot] [--screen WxH] [--shadow N]\n"
-    "                      [--set k=v]... [--no-reuse] [--extended-lifetimes] [--frame]\n"
-    "Compiles a render-graph file (docs/graph-format.md) and reports errors or the plan.\n"
+    "                      [--set k=v]... [--no-reuse] [--extended-lifetimes] [--frame | --no-frame]\n"
+    "Compiles a render-graph file (docs/graph-format.md) against every built-in pass type and\n"
+    "reports errors or the plan. A technique graph (one that reads the frame's scene, camera,\n"
+    "light or gbuffer_* without declaring them) is composed into the frame it runs in first.\n"
     "  --plan                print the compiled plan (order, culled, textures, lifetimes,\n"
     "                        barriers, memory)\n"
     "  --dot OUT.dot         write the plan as Graphviz\n"
@@ -28,8 +30,9 @@ const char* kHelp =
     "  --set k=v             set a graph parameter (repeatable)\n"
     "  --no-reuse            debug: one texture per resource\n"
     "  --extended-lifetimes  debug: every transient lives the whole frame\n"
-    "  --frame               compose a technique graph into the frame it runs in (G-buffer\n"
-    "                        prologue, lighting epilogue; docs/writing-a-technique.md)\n"
+    "  --frame               always compose into the frame (G-buffer prologue, lighting\n"
+    "                        epilogue; docs/writing-a-technique.md)\n"
+    "  --no-frame            never compose: compile the file as it is\n"
     "Exit codes: 0 ok, 2 invalid input, 1 internal error.\n";
 
 int usage_error(const std::string& message) {
@@ -44,7 +47,7 @@ bool parse_positive(std::string_view text, int& out, int max) {
 
 int run(const std::vector<std::string>& args) {
   std::string file, dot_path;
-  bool print_plan = false, frame = false;
+  bool print_plan = false, frame = false, no_frame = false;
   graph::CompileSettings settings;
   graph::CompileOptions options;
   std::vector<std::string> sets;
@@ -63,6 +66,8 @@ int run(const std::vector<std::string>& args) {
       print_plan = true;
     } else if (a == "--frame") {
       frame = true;
+    } else if (a == "--no-frame") {
+      no_frame = true;
     } else if (a == "--no-reuse") {
       options.no_reuse = true;
     } else if (a == "--extended-lifetimes") {
@@ -90,13 +95,15 @@ int run(const std::vector<std::string>& args) {
     }
   }
   if (file.empty()) return usage_error("missing FILE.json");
+  if (frame && no_frame) return usage_error("--frame and --no-frame exclude each other");
 
   graph::Checked<graph::GraphDesc> desc = graph::load_graph_json(file);
   if (!desc) {
     for (const auto& e : desc.errors()) std::cerr << e.to_string() << "\n";
     return 2;
   }
-  if (frame) {
+  const bool compose = frame || (!no_frame && plugin::reads_frame_resources(*desc));
+  if (compose) {
     auto composed = plugin::compose_frame_graph(*desc);
     if (!composed) {
       std::cerr << composed.error().to_string() << "\n";
@@ -126,7 +133,7 @@ int run(const std::vector<std::string>& args) {
   }
   if (print_plan) std::cout << graph::to_text(*plan);
   else
-    std::cout << file << ": ok, " << plan->passes.size() << " passes, " << plan->culled.size()
+    std::cout << file << ": ok" << (compose ? " (composed into the frame)" : "") << ", " << plan->passes.size() << " passes, " << plan->culled.size()
               << " culled, " << plan->physical.size() << " physical resources, "
               << plan->memory.assigned_bytes << " of " << plan->memory.naive_bytes << " B\n";
   return 0;

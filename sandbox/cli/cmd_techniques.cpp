@@ -1,6 +1,8 @@
-// penumbra techniques [--json] [--plugin-dir DIR]: every registered technique with its
-// parameters, read from the technique's graph JSON (plugin::load_technique_graph): the one
-// description the sandbox UI, presets and `--set` also use. Needs no GL context.
+// penumbra techniques [NAME...] [--json | --markdown] [--plugin-dir DIR]: every registered
+// technique (or the named ones) with its description and parameters, read from the technique's
+// graph JSON (plugin::load_technique_graph): the one description the sandbox UI, presets and
+// `--set` also use. `--markdown` prints the parameter table a technique's README embeds (a test
+// keeps the READMEs equal to it). Needs no GL context.
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +17,7 @@ namespace {
 
 const std::vector<OptionSpec> kSpecs = {
     {"json", false, false, "", "print a JSON array instead of text"},
+    {"markdown", false, false, "", "print each technique's parameter table as Markdown (the README tables)"},
     {"plugin-dir", true, false, "DIR", "also load technique plugins (*.so) from DIR"},
 };
 
@@ -61,8 +64,30 @@ std::string range_text(const graph::ParamDesc& p) {
   return s;
 }
 
+// A Markdown table cell: '|' would end the cell.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+void print_markdown_table(const graph::GraphDesc& g) {
+  std::printf("| parameter | type | default | range / options | unit | rebuilds graph | description |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (const graph::ParamDesc& p : g.parameters) {
+    std::string range;
+    if (p.type == graph::ParamType::enumeration)
+      for (const std::string& o : p.options) range += (range.empty() ? "" : " / ") + o;
+    else if (p.has_range())
+      range = graph::param_value_to_string(p.min) + " – " + graph::param_value_to_string(p.max);
+    std::printf("| `%s` | %s | %s | %s | %s | %s | %s |\n", p.name.c_str(), graph::param_type_name(p.type),
+                cell(default_text(p)).c_str(), cell(range).c_str(), cell(p.unit).c_str(),
+                p.structural ? "yes" : "", cell(p.description).c_str());
+  }
+}
+
 void print_text(const plugin::Technique& t, const graph::GraphDesc& g) {
-  std::printf("%s\n  %s\n  graph: %s\n", t.name.c_str(), t.description.c_str(), t.graph_file.c_str());
+  std::printf("%s\n  %s\n  graph: %s\n", t.name.c_str(), g.description.c_str(), t.graph_file.c_str());
   for (const graph::ParamDesc& p : g.parameters) {
     std::printf("  --set %s=%s\n      %s, %s%s%s\n", p.name.c_str(), default_text(p).c_str(),
                 graph::param_type_name(p.type),
@@ -75,17 +100,18 @@ void print_text(const plugin::Technique& t, const graph::GraphDesc& g) {
 
 int cmd_techniques(const std::vector<std::string>& argv) {
   if (help_requested(argv))
-    return print_help("penumbra techniques [--json] [--plugin-dir DIR]",
-                                    "Lists every registered shadow technique with its description and\n"
-                                    "parameters (type, default, range, unit, description, structural).",
-                                    kSpecs);
+    return print_help("penumbra techniques [NAME...] [--json | --markdown] [--plugin-dir DIR]",
+                      "Lists every registered shadow technique (or the named ones) with its\n"
+                      "description and parameters (type, default, range, unit, description,\n"
+                      "structural), all read from the technique's graph JSON.",
+                      kSpecs);
   auto args = parse_args(argv, kSpecs);
   if (!args) {
     std::fprintf(stderr, "penumbra techniques: %s\n", args.error().to_string().c_str());
     return 2;
   }
-  if (!args->positionals.empty()) {
-    std::fprintf(stderr, "penumbra techniques: unexpected argument '%s'\n", args->positionals[0].c_str());
+  if (args->has("json") && args->has("markdown")) {
+    std::fprintf(stderr, "penumbra techniques: --json and --markdown exclude each other\n");
     return 2;
   }
   plugin::TechniqueRegistry registry;
@@ -96,14 +122,36 @@ int cmd_techniques(const std::vector<std::string>& argv) {
       return loaded.error().exit_code();
     }
 
-  const bool json = args->has("json");
+  std::vector<const plugin::Technique*> selected;
+  for (const std::string& name : args->positionals) {
+    const plugin::Technique* t = registry.find(name);
+    if (!t) {
+      std::string valid;
+      for (const std::string& n : registry.names()) valid += (valid.empty() ? "" : ", ") + n;
+      std::fprintf(stderr, "penumbra techniques: unknown technique '%s' (available: %s)\n",
+                   shortened(name).c_str(), valid.c_str());
+      return 2;
+    }
+    selected.push_back(t);
+  }
+  if (selected.empty())
+    for (const plugin::Technique& t : registry.all()) selected.push_back(&t);
+
+  const bool json = args->has("json"), markdown = args->has("markdown");
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
-  for (const plugin::Technique& t : registry.all()) {
+  for (const plugin::Technique* technique : selected) {
+    const plugin::Technique& t = *technique;
     Result<graph::GraphDesc> g = plugin::load_technique_graph(t);
     if (!g) {  // a registered technique whose graph does not load is a build/plugin bug
       std::fprintf(stderr, "penumbra techniques: technique '%s': %s\n", t.name.c_str(),
                    g.error().to_string().c_str());
       return 1;
+    }
+    if (markdown) {
+      if (selected.size() > 1) std::printf("### %s\n\n%s\n\n", t.name.c_str(), g->description.c_str());
+      print_markdown_table(*g);
+      if (selected.size() > 1) std::printf("\n");
+      continue;
     }
     if (!json) {
       print_text(t, *g);
@@ -111,7 +159,7 @@ int cmd_techniques(const std::vector<std::string>& argv) {
     }
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
     for (const graph::ParamDesc& p : g->parameters) params.push_back(param_json(p));
-    all.push_back({{"name", t.name}, {"description", t.description}, {"graph_file", t.graph_file},
+    all.push_back({{"name", t.name}, {"description", g->description}, {"graph_file", t.graph_file},
                    {"parameters", params}});
   }
   if (json) std::printf("%s\n", all.dump(2).c_str());

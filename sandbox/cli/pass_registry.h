@@ -1,6 +1,6 @@
 #pragma once
-// The pass type declarations the CLI compiles graph files against (the lead implements this
-// with the real pass types; pass_registry_stub.cpp is a temporary stand-in).
+// The pass type declarations `penumbra graph` compiles graph files against: every real pass
+// type, the shared passes and every built-in technique's own.
 #include "graph/pass_types.h"
 
 namespace penumbra::cli {

@@ -12,7 +12,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 mkdir -p "$out/pmchss" "$out/eval"
 "$bin" info --context egl > "$out/info.txt"
 CONTEXT=egl "$here/pmchss-bench.sh" "$bin" "$out/pmchss" || echo "pmchss-bench failed: $?"
-MASK_RESOLUTION=half CONTEXT=egl "$here/pmchss-bench.sh" "$bin" "$out/pmchss-half" || echo "pmchss-bench half failed: $?"
+MASK_DIVISOR=2 CONTEXT=egl "$here/pmchss-bench.sh" "$bin" "$out/pmchss-half" || echo "pmchss-bench half failed: $?"
 SIZE=2560x1440 CONTEXT=egl "$here/pmchss-bench.sh" "$bin" "$out/pmchss-1440" || echo "pmchss-bench 1440 failed: $?"
 SIZE=3840x2160 SHADOW=4096 CONTEXT=egl "$here/pmchss-bench.sh" "$bin" "$out/pmchss-2160" || echo "pmchss-bench 2160 failed: $?"
 "$bin" bench --context egl --techniques hard,pcf,pcss,pmchss --scenes colonnade,ball,fence,poles \

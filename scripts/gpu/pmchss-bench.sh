@@ -4,8 +4,8 @@
 #
 #   scripts/gpu/pmchss-bench.sh [PENUMBRA_BINARY] [OUT_DIR]
 #   env: SIZE=1920x1080 SHADOW=2048 SCENE=colonnade FRAMES=200 CONTEXT=egl
-#        MASK_RESOLUTION=quarter (screen/4, the default) or half (screen/2: a quarter of the
-#        pixels, which is what the paper's "quarter res" buffer holds)
+#        MASK_DIVISOR=4 (screen/4, the default) or 2 (screen/2: a quarter of the pixels, which
+#        is what the paper's "quarter res" buffer holds)
 #
 # On the GPU machine: run with the bundled binary and CONTEXT=egl (the default). On llvmpipe
 # (a proof that it works; the numbers say nothing about ratios): SIZE=320x180 CONTEXT=osmesa.
@@ -18,7 +18,7 @@ shadow="${SHADOW:-2048}"
 scene="${SCENE:-colonnade}"
 frames="${FRAMES:-200}"
 context="${CONTEXT:-egl}"
-mask_resolution="${MASK_RESOLUTION:-quarter}"
+mask_divisor="${MASK_DIVISOR:-4}"
 mkdir -p "$out"
 
 # name|settings: every row 16 filter taps, 32 blocker taps (Table 1's caption), no debug passes.
@@ -33,7 +33,7 @@ for entry in "${configs[@]}"; do
   name="${entry%%|*}"
   sets=()
   for kv in ${entry#*|} debug_outputs=false filter_samples=16 blocker_samples=32 \
-            "mask_resolution=$mask_resolution"; do sets+=(--set "$kv"); done
+            "mask_divisor=$mask_divisor"; do sets+=(--set "$kv"); done
   echo "== $name: ${entry#*|}" >&2
   "$bin" bench --techniques pmchss --scenes "$scene" --size "$size" --shadow-size "$shadow" \
     --frames "$frames" --context "$context" "${sets[@]}" --json "$out/$name.json"

@@ -43,7 +43,6 @@ exec::PassType template_mask_pass_type() {
 
 void register_technique(plugin::TechniqueRegistry& registry) {
   registry.add({.name = "template",
-                .description = "Copy-me technique: hard shadow lightened by shadow_strength",
                 .graph_file = "techniques/_template/template.json",
                 .register_passes = [](exec::PassLibrary& library) { library.add(template_mask_pass_type()); }});
 }

@@ -9,13 +9,10 @@ namespace penumbra::baseline {
 
 void register_techniques(plugin::TechniqueRegistry& registry) {
   registry.add({.name = "hard",
-                .description = "Hard shadow mapping (one comparison per pixel)",
                 .graph_file = "techniques/baseline/hard.json"});
   registry.add({.name = "pcf",
-                .description = "Percentage-closer filtering, box or Vogel-disk kernel",
                 .graph_file = "techniques/baseline/pcf.json"});
   registry.add({.name = "pcss",
-                .description = "Percentage-closer soft shadows (Fernando 2005)",
                 .graph_file = "techniques/baseline/pcss.json"});
 }
 

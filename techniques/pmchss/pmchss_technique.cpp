@@ -19,8 +19,6 @@ void register_passes(exec::PassLibrary& library) {
 
 void register_technique(plugin::TechniqueRegistry& registry) {
   registry.add({.name = "pmchss",
-                .description = "Penumbra-mask contact-hardening soft shadows (Sterna 2018): "
-                               "regular CHSS, penumbra mask, min filter, checkerboard",
                 .graph_file = "techniques/pmchss/pmchss.json",
                 .register_passes = register_passes});
 }

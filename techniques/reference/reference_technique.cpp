@@ -7,7 +7,6 @@ namespace penumbra::reference {
 
 void register_techniques(plugin::TechniqueRegistry& registry) {
   registry.add({.name = "reference",
-                .description = "Ground truth: accumulated shadow maps (raster) or Embree ray tracing (raytraced)",
                 .graph_file = "techniques/reference/reference.json",
                 .register_passes = [](exec::PassLibrary& library) {
                   library.add(raster_reference_pass_type());

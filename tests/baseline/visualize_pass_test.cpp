@@ -13,7 +13,7 @@ TEST(VisualizePass, HeatAndGreyMapsFollowTheInput) {
   gl_context();
   plugin::TechniqueRegistry registry;
   register_builtin_techniques(registry);
-  registry.add({.name = "visualize_test", .description = "test", .graph_file = "tests/baseline/visualize_graph.json"});
+  registry.add({.name = "visualize_test", .graph_file = "tests/baseline/visualize_graph.json"});
   exec::PassLibrary library = make_pass_library(registry);
   plugin::TechniqueSession session(registry, library);
   session.set_scene(builtin_scene("ball"));

@@ -7,7 +7,7 @@
 
 #include "graph/builder.h"
 #include "graph/compiler.h"
-#include "graph/generic_pass_types.h"
+#include "support/generic_pass_types.h"
 
 namespace {
 

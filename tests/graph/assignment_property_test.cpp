@@ -93,7 +93,7 @@ void check_assignment(const CompiledPlan& plan, const GraphDesc& g) {
     const PhysicalResource& p = plan.physical.at(a.physical);
     const ResourceDecl& da = decl_of(a.name);
     int w, h;
-    da.size.resolve(plan.settings, w, h);
+    da.size.resolve(plan.settings, da.size.divisor, w, h);
     EXPECT_EQ((DescKey{p.kind, p.format, p.width, p.height}), (DescKey{da.kind, da.format, w, h}))
         << a.label() << " on a texture of another descriptor";
     for (size_t j = i + 1; j < plan.versions.size(); ++j) {

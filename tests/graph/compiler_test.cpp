@@ -124,7 +124,7 @@ TEST(GraphVersions, PingPongIsRenamingWithTwoPhysicalTextures) {
 
 TEST(GraphVersions, ReadWriteStaysInOnePhysicalTexture) {
   GraphBuilder b("in_place");
-  b.parameter({.name = "n", .type = ParamType::integer, .default_value = 4, .min = 1, .max = 64});
+  b.parameter({.name = "n", .type = ParamType::integer, .default_value = 4, .min = 1, .max = 64, .structural = true});
   auto scene = b.import("scene"), camera = b.import("camera");
   auto depth = b.texture("depth", Format::DEPTH32F, SizeExpr::screen());
   auto mask = b.texture("mask", Format::R8, SizeExpr::screen());
@@ -163,10 +163,10 @@ TEST(GraphExpansion, RepeatAndEnabledFollowParameters) {
 
 TEST(GraphExpansion, EnabledExpressions) {
   GraphBuilder b("conditions");
-  b.parameter({.name = "a", .type = ParamType::boolean, .default_value = true});
-  b.parameter({.name = "b", .type = ParamType::boolean, .default_value = false});
+  b.parameter({.name = "a", .type = ParamType::boolean, .default_value = true, .structural = true});
+  b.parameter({.name = "b", .type = ParamType::boolean, .default_value = false, .structural = true});
   b.parameter({.name = "variant", .type = ParamType::enumeration, .default_value = std::string("mask"),
-               .options = {"mask", "debug"}});
+               .structural = true, .options = {"mask", "debug"}});
   auto scene = b.import("scene"), camera = b.import("camera");
   auto out = b.import("output");
   const char* conditions[] = {"$a", "!$a", "$a && $b", "$a || $b", "$variant == \"mask\"",

@@ -3,6 +3,7 @@
 
 #include <random>
 
+#include "graph/condition.h"
 #include "graph/graph_json.h"
 #include "test_registry.h"
 
@@ -97,6 +98,66 @@ TEST(GraphJson, ExampleRoundTripThroughBuilderModel) {
   auto plan = compile_graph(*g);
   ASSERT_TRUE(plan);
   EXPECT_EQ(plan->physical.at(0).width, 128);
+}
+
+TEST(GraphJson, DuplicateKeysAreErrorsNamingBothPlaces) {
+  // A second "passes" would silently wipe the first.
+  auto g = parse_graph_json("{\"name\": \"x\", \"passes\": [],\n  \"passes\": []}", "dup.json");
+  ASSERT_FALSE(g);
+  const GraphError& e = g.errors().at(0);
+  EXPECT_EQ(e.code, GraphErrorCode::malformed_json);
+  EXPECT_EQ(e.line, 2);
+  EXPECT_EQ(e.column, 3);
+  EXPECT_NE(e.message.find("duplicate key \"passes\" (first at 1:15)"), std::string::npos) << e.message;
+  // Equal keys in different objects are fine.
+  EXPECT_TRUE(parse_graph_json(R"({"name": "x", "resources": {"a": {"kind": "imported"}, "b": {"kind": "imported"}}, "passes": []})"));
+}
+
+TEST(GraphJson, DuplicateParameterNamesAreErrorsNamingBoth) {
+  auto g = parse_graph_json(R"({"name": "x", "parameters": [
+    {"name": "n", "type": "int", "default": 1, "min": 0, "max": 2},
+    {"name": "n", "type": "bool", "default": true}], "passes": []})", "p.json");
+  ASSERT_FALSE(g);
+  const GraphError& e = g.errors().at(0);
+  EXPECT_EQ(e.code, GraphErrorCode::duplicate_name);
+  EXPECT_EQ(e.where, "/parameters/1/name");
+  EXPECT_NE(e.message.find("/parameters/0"), std::string::npos) << e.message;
+}
+
+TEST(GraphJson, OverflowingNumbersAreReportedWhereTheyAreInOneShortLine) {
+  for (const std::string& number : {std::string("1e999"), std::string(100000, '7')}) {
+    auto g = parse_graph_json("{\"name\": \"x\",\n \"passes\": [{\"repeat\": " + number + "}]}", "n.json");
+    ASSERT_FALSE(g);
+    const GraphError& e = g.errors().at(0);
+    EXPECT_EQ(e.line, 2);
+    EXPECT_EQ(e.column, 24);
+    EXPECT_LT(e.to_string().size(), 200u) << e.to_string().substr(0, 300);
+  }
+}
+
+TEST(GraphJson, LongOperatorChainsNeverRecurse) {
+  // A few hundred terms (the longest a condition may be): parsed and evaluated iteratively.
+  std::string chain = "$flag";
+  while (chain.size() + 12 < kMaxConditionLength) chain += " || !$flag";
+  auto g = parse_graph_json(R"({"name": "c", "parameters": [{"name": "flag", "type": "bool", "default": false, "structural": true}],
+    "resources": {"scene": {"kind": "imported"}, "camera": {"kind": "imported"},
+                  "d": {"kind": "texture", "format": "DEPTH32F", "size": "screen"}},
+    "passes": [{"type": "depth_prepass", "name": "z", "enabled": ")" + chain + R"(",
+                "slots": {"scene": "scene", "camera": "camera", "depth": "d"}}],
+    "outputs": ["d"]})", "c.json");
+  ASSERT_TRUE(g) << all_messages(g.errors());
+  auto plan = compile_graph(*g);
+  ASSERT_TRUE(plan) << all_messages(plan.errors());
+  EXPECT_EQ(plan->passes.size(), 1u);
+  // Hundreds of kB of terms: refused with a short message, no stack overflow.
+  std::string huge = "$flag";
+  for (int i = 0; i < 40000; ++i) huge += " || $flag && $flag";
+  g->passes[0].enabled = huge;
+  plan = compile_graph(*g);
+  ASSERT_FALSE(plan);
+  EXPECT_EQ(plan.errors()[0].code, GraphErrorCode::bad_condition);
+  EXPECT_NE(plan.errors()[0].message.find("characters long"), std::string::npos);
+  EXPECT_LT(plan.errors()[0].message.size(), 200u);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Golden plan dumps of every shipped technique graph, composed into the frame, at its default
-// parameters (1920x1080, 2048^2 shadow map): a change of the graph format or of a technique's
-// JSON must not change what runs unless the dump's diff says so. After an intended change,
-// regenerate with
+// parameters (1920x1080, 2048^2 shadow map), and of the documented examples: a change of the
+// graph format or of a technique's JSON must not change what runs unless the dump's diff says
+// so. After an intended change, regenerate with
 //   PENUMBRA_UPDATE_GOLDEN=1 ./technique_plan_tests
 // and review the diff like code.
 #include <gtest/gtest.h>
@@ -9,8 +9,11 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "graph/compiler.h"
+#include "graph/graph_json.h"
 #include "plugin/frame_graph.h"
 #include "plugin/technique_session.h"
 #include "techniques/_template/template_technique.h"
@@ -41,6 +44,19 @@ const Techniques& techniques() {
   return t;
 }
 
+// The plan must equal the golden file, or (PENUMBRA_UPDATE_GOLDEN=1) becomes it.
+void expect_golden(const std::string& text, const std::string& golden) {
+  const char* update = std::getenv("PENUMBRA_UPDATE_GOLDEN");
+  if (update && std::string(update) == "1") {
+    std::ofstream(golden, std::ios::binary) << text;
+    GTEST_SKIP() << "updated " << golden;
+  }
+  const std::string expected = read_file(golden);
+  ASSERT_FALSE(expected.empty()) << golden << " missing; run with PENUMBRA_UPDATE_GOLDEN=1";
+  EXPECT_EQ(text, expected) << "plan changed against " << golden
+                            << "; if intended, regenerate with PENUMBRA_UPDATE_GOLDEN=1 and review the diff";
+}
+
 class TechniquePlan : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TechniquePlan, DefaultPlanMatchesGoldenDump) {
@@ -54,18 +70,70 @@ TEST_P(TechniquePlan, DefaultPlanMatchesGoldenDump) {
   graph::ParameterSet params(frame->parameters);
   auto plan = graph::compile(*frame, techniques().library.declarations(), params, {1920, 1080, 2048});
   ASSERT_TRUE(plan) << plugin::errors_to_error(plan.errors()).details;
-  const std::string text = graph::to_text(*plan);
-  const std::string golden = std::string(PENUMBRA_TEST_DATA_DIR) + "/golden/techniques/" + name + ".txt";
-  const char* update = std::getenv("PENUMBRA_UPDATE_GOLDEN");
-  if (update && std::string(update) == "1") {
-    std::ofstream(golden, std::ios::binary) << text;
-    GTEST_SKIP() << "updated " << golden;
-  }
-  const std::string expected = read_file(golden);
-  ASSERT_FALSE(expected.empty()) << golden << " missing; run with PENUMBRA_UPDATE_GOLDEN=1";
-  EXPECT_EQ(text, expected) << "default plan of " << name << " changed; if intended, regenerate with "
-                            << "PENUMBRA_UPDATE_GOLDEN=1";
+  expect_golden(graph::to_text(*plan), std::string(PENUMBRA_TEST_DATA_DIR) + "/golden/techniques/" + name + ".txt");
 }
+
+// Every value of every structural parameter, in every combination (int ranges of up to 16
+// values), compiles: a variant no default exercises cannot rot unseen.
+TEST_P(TechniquePlan, EveryStructuralCombinationCompiles) {
+  const plugin::Technique* technique = techniques().registry.find(GetParam());
+  ASSERT_NE(technique, nullptr);
+  auto frame = plugin::compose_frame_graph(*plugin::load_technique_graph(*technique));
+  ASSERT_TRUE(frame);
+  std::vector<std::pair<std::string, std::vector<graph::ParamValue>>> axes;
+  for (const graph::ParamDesc& d : frame->parameters) {
+    if (!d.structural) continue;
+    std::vector<graph::ParamValue> values;
+    if (d.type == graph::ParamType::boolean) values = {false, true};
+    if (d.type == graph::ParamType::enumeration)
+      for (const std::string& o : d.options) values.push_back(o);
+    if (d.type == graph::ParamType::integer && d.max - d.min < 16)
+      for (int v = static_cast<int>(d.min); v <= static_cast<int>(d.max); ++v) values.push_back(v);
+    if (!values.empty()) axes.emplace_back(d.name, values);
+  }
+  std::vector<size_t> index(axes.size(), 0);
+  int compiled = 0;
+  for (bool more = true; more; ++compiled) {
+    graph::ParameterSet params(frame->parameters);
+    std::string combination;
+    for (size_t a = 0; a < axes.size(); ++a) {
+      ASSERT_TRUE(params.set(axes[a].first, axes[a].second[index[a]]));
+      combination += axes[a].first + "=" + graph::param_value_to_string(axes[a].second[index[a]]) + " ";
+    }
+    auto plan = graph::compile(*frame, techniques().library.declarations(), params, {640, 360, 1024});
+    ASSERT_TRUE(plan) << combination << "\n" << plugin::errors_to_error(plan.errors()).details;
+    more = false;
+    for (size_t a = 0; a < axes.size() && !more; ++a) {
+      if (++index[a] < axes[a].second.size()) more = true;
+      else index[a] = 0;
+    }
+  }
+  RecordProperty("combinations", compiled);
+}
+
+// The documented examples (docs/graph-examples) compile against the real pass types, as
+// `penumbra graph FILE` does: composed into the frame when they read its resources.
+class DocumentedExample : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DocumentedExample, PlanMatchesGoldenDump) {
+  const std::string name = GetParam();
+  const std::string path = std::string(PENUMBRA_SOURCE_DIR) + "/docs/graph-examples/" + name + ".json";
+  auto declared = graph::load_graph_json(path);
+  ASSERT_TRUE(declared) << plugin::errors_to_error(declared.errors()).details;
+  graph::GraphDesc desc = *declared;
+  if (plugin::reads_frame_resources(desc)) {
+    auto frame = plugin::compose_frame_graph(desc);
+    ASSERT_TRUE(frame) << frame.error().to_string();
+    desc = *frame;
+  }
+  graph::ParameterSet params(desc.parameters);
+  auto plan = graph::compile(desc, techniques().library.declarations(), params, {1920, 1080, 2048});
+  ASSERT_TRUE(plan) << plugin::errors_to_error(plan.errors()).details;
+  expect_golden(graph::to_text(*plan), std::string(PENUMBRA_TEST_DATA_DIR) + "/golden/" + name + ".txt");
+}
+
+INSTANTIATE_TEST_SUITE_P(Docs, DocumentedExample,
+                         ::testing::Values("pcss_blur", "penumbra_variants", "progressive_reference"));
 
 INSTANTIATE_TEST_SUITE_P(Shipped, TechniquePlan,
                          ::testing::Values("hard", "pcf", "pcss", "pmchss", "reference", "template"));

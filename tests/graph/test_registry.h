@@ -2,7 +2,7 @@
 // Shared helpers of the graph tests: the generic registry and a tiny graph builder shortcut.
 #include "graph/builder.h"
 #include "graph/compiler.h"
-#include "graph/generic_pass_types.h"
+#include "support/generic_pass_types.h"
 
 namespace penumbra::graph::testing {
 

@@ -15,8 +15,8 @@ std::string graph_with(const std::string& passes, const std::string& extra_param
   return R"({"name": "t",
   "parameters": [
     {"name": "radius", "type": "int", "default": 2, "min": 1, "max": 16},
-    {"name": "flag", "type": "bool", "default": true},
-    {"name": "n", "type": "int", "default": 100, "min": 1, "max": 1000})" + extra_params + R"(],
+    {"name": "flag", "type": "bool", "default": true, "structural": true},
+    {"name": "n", "type": "int", "default": 100, "min": 1, "max": 1000, "structural": true})" + extra_params + R"(],
   "resources": {
     "scene": {"kind": "imported"}, "camera": {"kind": "imported"}, "light": {"kind": "imported"},
     "depth": {"kind": "texture", "format": "DEPTH32F", "size": "screen"},
@@ -141,11 +141,25 @@ TEST(GraphValidation, RepeatOutOfRange) {
   auto e = only(errors_of(graph_with(kFilter + R"(,
     {"type": "blur_in_place", "name": "smooth", "repeat": "$n", "slots": {"image": "mask"}})")),
                 GraphErrorCode::repeat_out_of_range);
-  expect_mentions(e, {"/passes/2/repeat", "smooth", "$n", "100", "[1, 64]"});
+  expect_mentions(e, {"/passes/2/repeat", "smooth", "$n", "[1, 1000]", "[1, 64]"});
   auto constant = only(errors_of(graph_with(kFilter + R"(,
     {"type": "blur_in_place", "name": "smooth", "repeat": 0, "slots": {"image": "mask"}})")),
                        GraphErrorCode::repeat_out_of_range);
   expect_mentions(constant, {"/passes/2/repeat", "smooth"});
+}
+
+TEST(GraphValidation, VersionsPastTheLimitAreErrorsNamingPassAndResource) {
+  auto pinned = only(errors_of(graph_with(kFilter + R"(,
+    {"type": "blur", "name": "late", "slots": {"input": "mask", "output": "mask@1024"}},
+    {"type": "blur", "name": "later", "slots": {"input": "mask", "output": "mask"}})")),
+                     GraphErrorCode::version_out_of_range);
+  expect_mentions(pinned, {"/passes/3/slots/output", "later", "mask", "1025", "1024"});
+  // An in-place chain of 17 x 64 writes runs past the limit: an error, not dropped writes.
+  std::string chain = kFilter;
+  for (int i = 0; i < 17; ++i)
+    chain += R"(, {"type": "blur_in_place", "name": "s)" + std::to_string(i) + R"(", "repeat": 64, "slots": {"image": "mask"}})";
+  auto long_chain = only(errors_of(graph_with(chain)), GraphErrorCode::version_out_of_range);
+  expect_mentions(long_chain, {"s15[", "mask", "1025"});
 }
 
 TEST(GraphValidation, BadCondition) {

@@ -34,9 +34,9 @@ TEST(PmchssSmoke, EveryVariantRendersAValidMask) {
   }
   // The mask's structural switches: half resolution, max filter, no blur, default 1.
   for (std::vector<std::string> config :
-       {std::vector<std::string>{"variant=penumbra_mask", "checkerboard=false", "mask_resolution=half"},
+       {std::vector<std::string>{"variant=penumbra_mask", "checkerboard=false", "mask_divisor=2"},
         {"mask_max_filter=true"}, {"mask_blur=false"}, {"mask_max_filter=false", "mask_default_one=true"},
-        {"mask_resolution=quarter", "mask_blur=true", "mask_default_one=false"}}) {
+        {"mask_divisor=4", "mask_blur=true", "mask_default_one=false"}}) {
     rig.set(config);
     rig.render();
     metrics::MaskImage m = rig.shadow_mask();
@@ -44,8 +44,8 @@ TEST(PmchssSmoke, EveryVariantRendersAValidMask) {
     EXPECT_LT(*lo, 0.05f) << config.front();
     EXPECT_GT(*hi, 0.95f) << config.front();
   }
-  EXPECT_EQ(rig.read("penumbra_mask_quarter").width, 192 / 4);
-  test::save_for_inspection("colonnade_penumbra_mask_raw", rig.read("penumbra_mask_raw_quarter"));
-  test::save_for_inspection("colonnade_penumbra_mask_blurred", rig.read("penumbra_mask_quarter"));
+  EXPECT_EQ(rig.read("penumbra_mask").width, 192 / 4);
+  test::save_for_inspection("colonnade_penumbra_mask_raw", rig.read("penumbra_mask_raw"));
+  test::save_for_inspection("colonnade_penumbra_mask_blurred", rig.read("penumbra_mask"));
   test::save_for_inspection("colonnade_blocker_depth", rig.read("blocker_depth"));
 }

@@ -64,7 +64,6 @@ void register_passes(exec::PassLibrary& library) {
 
 void register_tiny_technique(plugin::TechniqueRegistry& registry) {
   registry.add({.name = kTinyTechnique,
-                .description = "Test pattern (sandbox tests only)",
                 .graph_file = "tests/sandbox/tiny_technique.json",
                 .register_passes = register_passes});
 }

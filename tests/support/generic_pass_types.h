@@ -1,7 +1,8 @@
 #pragma once
-// A handful of GENERIC pass type declarations (no GL behind them) used by the graph tests,
-// the example graphs in docs/graph-examples and the CLI stub registry. Real techniques
-// register their own declarations next to their GL code.
+// A handful of GENERIC pass type declarations (no GL behind them) for the graph compiler's
+// tests and benchmark: they exercise what no shipped pass type does (storage buffers, in-place
+// repeats, side-effect composites). Real pass types live next to their GL code; the documented
+// examples (docs/graph-examples) use those.
 //
 //   shadow_map      raster: scene, light (imported) -> depth (DEPTH32F, depth attachment)
 //   depth_prepass   raster: scene, camera (imported) -> depth (DEPTH32F)

@@ -1,4 +1,4 @@
-#include "graph/generic_pass_types.h"
+#include "support/generic_pass_types.h"
 
 // Designated initializers deliberately leave the remaining members at their defaults.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
