@@ -10,25 +10,33 @@ namespace penumbra::graph::detail {
 
 namespace {
 
-// Chosen bindings in the pass type's slot order, so a plan does not depend on the order a file
-// (or a template and the pass extending it) lists the slots in.
+// Every declared slot binding with its lookups; the applying ones in the pass type's slot
+// order, so a plan does not depend on the order a file (or a template and the pass extending
+// it) lists the slots in.
 void bind_slots(const CompileState& s, const PassDecl& p, BoundPass& out) {
-  std::vector<std::string_view> decided;
+  out.declared.reserve(p.slots.size());
   for (const SlotBinding& b : p.slots) {
-    if (std::find(decided.begin(), decided.end(), b.slot) != decided.end()) continue;
-    if (!s.holds(b.when)) continue;
-    decided.push_back(b.slot);
-    if (!b.resource.empty()) out.slots.push_back(&b);
+    BoundSlot bs;
+    bs.binding = &b;
+    bs.slot = out.type ? out.type->find_slot(b.slot) : nullptr;
+    bs.resource = b.resource.empty() ? -1 : s.find_resource(b.resource);
+    bool decided = std::any_of(out.declared.begin(), out.declared.end(), [&](const BoundSlot& earlier) {
+      return earlier.applies && earlier.binding->slot == b.slot;
+    });
+    bs.applies = !decided && s.holds(b.when);
+    out.declared.push_back(bs);
   }
   if (!out.type) return;
-  auto rank = [&](const SlotBinding* b) {
-    const auto& slots = out.type->slots;
-    for (size_t i = 0; i < slots.size(); ++i)
-      if (slots[i].name == b->slot) return i;
-    return slots.size();
-  };
-  std::stable_sort(out.slots.begin(), out.slots.end(),
-                   [&](const SlotBinding* a, const SlotBinding* b) { return rank(a) < rank(b); });
+  const SlotDecl* first = out.type->slots.data();
+  out.slots.reserve(out.declared.size());
+  for (const BoundSlot& bs : out.declared)
+    if (bs.applies && !bs.binding->resource.empty()) {
+      // Insertion in slot order (a pass has a handful of slots); unknown slots go last.
+      auto rank = [&](const BoundSlot& x) { return x.slot ? x.slot - first : out.type->slots.end() - out.type->slots.begin(); };
+      auto at = std::upper_bound(out.slots.begin(), out.slots.end(), bs,
+                                 [&](const BoundSlot& a, const BoundSlot& b) { return rank(a) < rank(b); });
+      out.slots.insert(at, bs);
+    }
 }
 
 void bind_params(const CompileState& s, const PassDecl& p, BoundPass& out) {

@@ -28,10 +28,19 @@ struct BoundParam {
   const ParamDesc* graph_param = nullptr; // the graph parameter it reads ($ or implicit); null: constant
 };
 
+// A slot binding with its names looked up once (validation and versioning both need them).
+struct BoundSlot {
+  const SlotBinding* binding = nullptr;
+  const SlotDecl* slot = nullptr;  // null: the type has no such slot
+  int resource = -1;               // -1: unbound ("") or no such resource
+  bool applies = false;            // the first binding of its slot whose `when` holds
+};
+
 struct BoundPass {
   const PassDecl* decl = nullptr;
   const PassTypeDecl* type = nullptr;  // null: unknown type (reported by validate)
-  std::vector<const SlotBinding*> slots;
+  std::vector<BoundSlot> declared;     // every slot binding of the declaration, in its order
+  std::vector<BoundSlot> slots;        // the applying bound ones, in the pass type's slot order
   std::vector<BoundParam> params;
 };
 

@@ -75,38 +75,35 @@ std::string disagreement(const ParamDesc& pass, const ParamDesc& graph) {
   return "";
 }
 
-void validate_slot_binding(CompileState& s, const PassDecl& p, const PassTypeDecl& type,
-                           const SlotBinding& b, const std::string& pass_loc) {
-  const std::string where = loc(b.location, pass_loc);
-  const SlotDecl* slot = type.find_slot(b.slot);
+// Where a pass is declared, for messages (built only when an error is reported).
+std::string pass_location(const PassDecl& p) { return loc(p.location, "pass '" + p.name + "'"); }
+
+void validate_slot_binding(CompileState& s, const PassDecl& p, const PassTypeDecl& type, const BoundSlot& bs) {
+  const SlotBinding& b = *bs.binding;
+  auto where = [&] { return loc(b.location, pass_location(p)); };
+  const SlotDecl* slot = bs.slot;
   if (!slot) {
     std::string valid;
     for (const auto& sd : type.slots) valid += (valid.empty() ? "" : ", ") + sd.name;
-    s.error(GraphErrorCode::unknown_slot, where,
+    s.error(GraphErrorCode::unknown_slot, where(),
             describe(p, b.slot, b.resource) + ": pass type '" + p.type + "' has no slot '" +
                 b.slot + "'; slots: " + valid);
     return;
   }
-  if (b.resource.empty()) {
-    if (b.when.empty())
-      s.error(GraphErrorCode::unknown_resource, where,
-              describe(p, b.slot, "") + ": binding names no resource");
-    return;  // a chosen "unbound"
-  }
-  int r = s.find_resource(b.resource);
-  if (r < 0) {
-    s.error(GraphErrorCode::unknown_resource, where,
+  if (b.resource.empty()) return;  // deliberately unbound (null, or a choice without it)
+  if (bs.resource < 0) {
+    s.error(GraphErrorCode::unknown_resource, where(),
             describe(p, b.slot, b.resource) + ": no resource named '" + b.resource + "' is declared");
     return;
   }
   if (b.version > kMaxVersion || b.version < -1) {
-    s.error(GraphErrorCode::version_out_of_range, where,
+    s.error(GraphErrorCode::version_out_of_range, where(),
             describe(p, b.slot, b.resource) + ": version " + std::to_string(b.version) +
                 " out of range 0.." + std::to_string(kMaxVersion));
   }
-  const ResourceDecl& res = s.graph.resources[r];
+  const ResourceDecl& res = s.graph.resources[bs.resource];
   if (!slot_accepts_kind(slot->kind, res.kind)) {
-    s.error(GraphErrorCode::format_not_accepted, where,
+    s.error(GraphErrorCode::format_not_accepted, where(),
             describe(p, b.slot, b.resource) + ": slot takes a " + slot_kind_name(slot->kind) +
                 ", resource is " + resource_kind_name(res.kind));
     return;
@@ -116,54 +113,53 @@ void validate_slot_binding(CompileState& s, const PassDecl& p, const PassTypeDec
       std::find(slot->formats.begin(), slot->formats.end(), res.format) == slot->formats.end()) {
     std::string accepted;
     for (Format f : slot->formats) accepted += (accepted.empty() ? "" : ", ") + std::string(format_name(f));
-    s.error(GraphErrorCode::format_not_accepted, where,
+    s.error(GraphErrorCode::format_not_accepted, where(),
             describe(p, b.slot, b.resource) + ": format " + format_name(res.format) +
                 " not accepted; slot accepts " + accepted);
   }
 }
 
 // Every declared binding, then what bind_passes chose: required slots and same-size groups.
-void validate_slots(CompileState& s, const BoundPass& bp, const std::string& pass_loc) {
+void validate_slots(CompileState& s, const BoundPass& bp) {
   const PassDecl& p = *bp.decl;
   const PassTypeDecl& type = *bp.type;
-  for (size_t i = 0; i < p.slots.size(); ++i) {
-    const SlotBinding& b = p.slots[i];
-    validate_slot_binding(s, p, type, b, pass_loc);
+  for (size_t i = 0; i < bp.declared.size(); ++i) {
+    const SlotBinding& b = *bp.declared[i].binding;
+    validate_slot_binding(s, p, type, bp.declared[i]);
     // A binding after an unconditional one of the same slot can never apply.
     for (size_t j = 0; j < i; ++j)
       if (p.slots[j].slot == b.slot && p.slots[j].when.empty()) {
-        s.error(GraphErrorCode::duplicate_name, loc(b.location, pass_loc),
+        s.error(GraphErrorCode::duplicate_name, loc(b.location, pass_location(p)),
                 describe(p, b.slot, b.resource) + ": slot is already bound (unconditionally)");
         break;
       }
   }
   for (const SlotDecl& sd : type.slots) {
     if (!sd.required) continue;
-    bool bound = std::any_of(bp.slots.begin(), bp.slots.end(),
-                             [&](const SlotBinding* b) { return b->slot == sd.name; });
+    bool bound = std::any_of(bp.slots.begin(), bp.slots.end(), [&](const BoundSlot& b) { return b.slot == &sd; });
     if (!bound)
-      s.error(GraphErrorCode::missing_required_slot, pass_loc,
+      s.error(GraphErrorCode::missing_required_slot, pass_location(p),
               describe(p, sd.name, "") + ": required slot is not bound" +
                   (p.slots.empty() ? "" : " for these parameter values"));
   }
   for (const auto& group : type.same_size_groups) {
-    const SlotBinding* first = nullptr;
-    int fw = 0, fh = 0;
-    for (const SlotBinding* b : bp.slots) {
-      if (std::find(group.begin(), group.end(), b->slot) == group.end()) continue;
-      int r = s.find_resource(b->resource);
-      if (r < 0 || s.width[r] == 0) continue;
+    const BoundSlot* first = nullptr;
+    for (const BoundSlot& b : bp.slots) {
+      if (b.resource < 0 || s.width[b.resource] == 0 || !b.slot ||
+          std::find(group.begin(), group.end(), b.slot->name) == group.end())
+        continue;
       if (!first) {
-        first = b;
-        fw = s.width[r];
-        fh = s.height[r];
-      } else if (s.width[r] != fw || s.height[r] != fh) {
-        s.error(GraphErrorCode::size_mismatch, loc(b->location, pass_loc),
-                describe(p, b->slot, b->resource) + ": size " + std::to_string(s.width[r]) + "x" +
-                    std::to_string(s.height[r]) + " differs from slot '" + first->slot +
-                    "' (resource '" + first->resource + "', " + std::to_string(fw) + "x" +
-                    std::to_string(fh) + "); these slots must have the same size");
+        first = &b;
+        continue;
       }
+      const int fw = s.width[first->resource], fh = s.height[first->resource];
+      const int w = s.width[b.resource], h = s.height[b.resource];
+      if (w != fw || h != fh)
+        s.error(GraphErrorCode::size_mismatch, loc(b.binding->location, pass_location(p)),
+                describe(p, b.binding->slot, b.binding->resource) + ": size " + std::to_string(w) + "x" +
+                    std::to_string(h) + " differs from slot '" + first->binding->slot + "' (resource '" +
+                    first->binding->resource + "', " + std::to_string(fw) + "x" + std::to_string(fh) +
+                    "); these slots must have the same size");
     }
   }
 }
@@ -186,55 +182,55 @@ void validate_reference(CompileState& s, const PassDecl& p, const ParamDesc& des
             who + (implicit ? " (bound by name)" : "") + " takes " + ref + ", but " + why);
 }
 
-void validate_params(CompileState& s, const BoundPass& bp, const std::string& pass_loc) {
+void validate_params(CompileState& s, const BoundPass& bp) {
   const PassDecl& p = *bp.decl;
   const PassTypeDecl& type = *bp.type;
   for (size_t i = 0; i < p.params.size(); ++i) {
     const ParamBinding& b = p.params[i];
-    const std::string where = loc(b.location, pass_loc);
-    const std::string who = "pass '" + p.name + "', parameter '" + b.name + "'";
+    auto where = [&] { return loc(b.location, pass_location(p)); };
+    auto who = [&] { return "pass '" + p.name + "', parameter '" + b.name + "'"; };
     const ParamDesc* desc = type.find_param(b.name);
     if (!desc) {
       std::string valid;
       for (const auto& d : type.params) valid += (valid.empty() ? "" : ", ") + d.name;
-      s.error(GraphErrorCode::param_unknown, where,
-              who + ": pass type '" + p.type + "' has no such parameter; parameters: " +
+      s.error(GraphErrorCode::param_unknown, where(),
+              who() + ": pass type '" + p.type + "' has no such parameter; parameters: " +
                   (valid.empty() ? "(none)" : valid));
       continue;
     }
     for (size_t j = 0; j < i; ++j)
       if (p.params[j].name == b.name && p.params[j].when.empty()) {
-        s.error(GraphErrorCode::duplicate_name, where, who + ": already bound (unconditionally)");
+        s.error(GraphErrorCode::duplicate_name, where(), who() + ": already bound (unconditionally)");
         break;
       }
     if (b.unbound) continue;
     if (!b.reference.empty()) {
       if (const ParamDesc* graph_param = s.params.find(b.reference))
-        validate_reference(s, p, *desc, *graph_param, where, false);
+        validate_reference(s, p, *desc, *graph_param, where(), false);
       else
-        s.error(GraphErrorCode::unknown_param_reference, where,
-                who + ": '$" + b.reference + "' is not a parameter of graph '" + s.graph.name + "'");
+        s.error(GraphErrorCode::unknown_param_reference, where(),
+                who() + ": '$" + b.reference + "' is not a parameter of graph '" + s.graph.name + "'");
       continue;
     }
     if (!value_has_type(desc->type, b.constant)) {
-      s.error(GraphErrorCode::param_wrong_type, where,
-              who + ": expects " + param_type_name(desc->type) + ", got " + param_value_to_string(b.constant));
+      s.error(GraphErrorCode::param_wrong_type, where(),
+              who() + ": expects " + param_type_name(desc->type) + ", got " + param_value_to_string(b.constant));
     } else if (Status st = check_param_value(*desc, b.constant); !st) {
-      s.error(GraphErrorCode::param_out_of_range, where, who + ": " + st.error().message);
+      s.error(GraphErrorCode::param_out_of_range, where(), who() + ": " + st.error().message);
     }
   }
   for (const BoundParam& bound : bp.params)
     if (!bound.binding && bound.graph_param)
-      validate_reference(s, p, *bound.desc, *bound.graph_param, pass_loc + "/params", true);
+      validate_reference(s, p, *bound.desc, *bound.graph_param, pass_location(p) + "/params", true);
 }
 
-void validate_repeat(CompileState& s, const PassDecl& p, const std::string& pass_loc) {
-  const std::string where = pass_loc + "/repeat";
+void validate_repeat(CompileState& s, const PassDecl& p) {
+  if (p.repeat_reference.empty() && p.repeat >= 1 && p.repeat <= kMaxRepeat) return;
+  const std::string where = pass_location(p) + "/repeat";
   const std::string limit = "[1, " + std::to_string(kMaxRepeat) + "]";
   if (p.repeat_reference.empty()) {
-    if (p.repeat < 1 || p.repeat > kMaxRepeat)
-      s.error(GraphErrorCode::repeat_out_of_range, where,
-              "pass '" + p.name + "': repeat " + std::to_string(p.repeat) + " is out of range " + limit);
+    s.error(GraphErrorCode::repeat_out_of_range, where,
+            "pass '" + p.name + "': repeat " + std::to_string(p.repeat) + " is out of range " + limit);
     return;
   }
   const std::string who = "pass '" + p.name + "': repeat '$" + p.repeat_reference + "'";
@@ -258,21 +254,21 @@ void validate_repeat(CompileState& s, const PassDecl& p, const std::string& pass
 
 void validate_declarations(CompileState& s) {
   std::unordered_map<std::string_view, int> pass_names;
+  pass_names.reserve(s.bound.size());
   for (const BoundPass& bp : s.bound) {
     const PassDecl& p = *bp.decl;
-    const std::string pass_loc = loc(p.location, "pass '" + p.name + "'");
     if (!pass_names.emplace(p.name, 0).second)
-      s.error(GraphErrorCode::duplicate_name, pass_loc, "pass '" + p.name + "' is declared twice");
+      s.error(GraphErrorCode::duplicate_name, pass_location(p), "pass '" + p.name + "' is declared twice");
     if (!bp.type) {
       std::string known;
       for (const auto& n : s.registry.names()) known += (known.empty() ? "" : ", ") + n;
-      s.error(GraphErrorCode::unknown_pass_type, pass_loc,
+      s.error(GraphErrorCode::unknown_pass_type, pass_location(p),
               "pass '" + p.name + "': unknown pass type '" + p.type + "'; known: " + known);
     } else {
-      validate_slots(s, bp, pass_loc);
-      validate_params(s, bp, pass_loc);
+      validate_slots(s, bp);
+      validate_params(s, bp);
     }
-    validate_repeat(s, p, pass_loc);
+    validate_repeat(s, p);
   }
   for (size_t i = 0; i < s.graph.outputs.size(); ++i)
     if (s.find_resource(s.graph.outputs[i]) < 0)

@@ -24,12 +24,12 @@ void resolve_versions(CompileState& s) {
   std::vector<PendingRead> reads;
   for (int pi = 0; pi < static_cast<int>(s.passes.size()); ++pi) {
     ExpandedPass& pass = s.passes[pi];
-    const PassTypeDecl& type = *pass.bound->type;
     // Reads first (they see the versions before this pass), then writes.
     pass.uses.reserve(pass.bound->slots.size());
-    for (const SlotBinding* b : pass.bound->slots) {
-      const SlotDecl* slot = type.find_slot(b->slot);
-      int r = s.find_resource(b->resource);
+    for (const BoundSlot& bs : pass.bound->slots) {
+      const SlotBinding* b = bs.binding;
+      const SlotDecl* slot = bs.slot;
+      const int r = bs.resource;
       if (!slot || r < 0 || b->version > kMaxVersion || b->version < -1) continue;
       ResourceUse use;
       use.slot = slot;

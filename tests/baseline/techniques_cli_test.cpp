@@ -108,6 +108,25 @@ TEST(RenderCommand, BadSetValuesExitTwoWithTheValidRange) {
   EXPECT_NE(even.output.find("odd"), std::string::npos) << even.output;
 }
 
+// The documented examples run through the shipped CLI; a technique graph is composed into the
+// frame by itself, and --no-frame shows why that is needed.
+TEST(GraphCommand, DocumentedExamplesAndTechniqueGraphsCompile) {
+  int examples = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(PENUMBRA_SOURCE_DIR) + "/docs/graph-examples")) {
+    CliRun r = run_cli("graph " + entry.path().string());
+    EXPECT_EQ(r.exit_code, 0) << entry.path() << "\n" << r.output;
+    ++examples;
+  }
+  EXPECT_GE(examples, 3);
+  const std::string pmchss = std::string(PENUMBRA_SOURCE_DIR) + "/techniques/pmchss/pmchss.json";
+  CliRun composed = run_cli("graph " + pmchss + " --set variant=min_filter --set checkerboard=true");
+  EXPECT_EQ(composed.exit_code, 0) << composed.output;
+  EXPECT_NE(composed.output.find("composed into the frame"), std::string::npos) << composed.output;
+  CliRun raw = run_cli("graph " + pmchss + " --no-frame");
+  EXPECT_EQ(raw.exit_code, 2) << raw.output;
+  EXPECT_NE(raw.output.find("gbuffer_position"), std::string::npos) << raw.output;
+}
+
 // A technique README's parameter table is generated from its graph JSON
 // (scripts/update-parameter-tables.sh): the description exists once, the README cannot drift.
 TEST(TechniqueDocs, ReadmeParameterTablesAreGeneratedFromTheJson) {
