@@ -31,6 +31,8 @@ class ShaderFileSystem {
   bool exists(const std::string& path) const;
   // The file's text, or an error naming the path and where it was looked for.
   Result<std::string> read(const std::string& path) const;
+  // Where `path` is read from on disk; nullopt for embedded-only files.
+  std::optional<std::filesystem::path> disk_path(const std::string& path) const;
   // Modification time on disk (hot reload); nullopt for embedded-only files.
   std::optional<std::filesystem::file_time_type> modified(const std::string& path) const;
   // Directories searched for an #include that is not found next to the including file.
@@ -38,7 +40,6 @@ class ShaderFileSystem {
   void add_include_dir(std::string dir) { include_dirs_.push_back(std::move(dir)); }
 
  private:
-  std::optional<std::filesystem::path> disk_path(const std::string& path) const;
   std::vector<std::filesystem::path> roots_;
   std::vector<std::string> include_dirs_ = {"engine/gl/shaders", "passes/common"};
   bool use_embedded_ = true;

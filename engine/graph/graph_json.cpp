@@ -3,8 +3,6 @@
 #include "graph/graph_json.h"
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -13,6 +11,7 @@
 
 #include "graph/condition.h"
 #include "graph/json_values.h"
+#include "util/file_read.h"
 #include "util/json_text.h"
 
 namespace penumbra::graph {
@@ -513,22 +512,15 @@ Checked<GraphDesc> parse_graph_json(std::string_view text, const std::string& fi
 }
 
 Checked<GraphDesc> load_graph_json(const std::string& path) {
-  GraphError e;
-  e.code = GraphErrorCode::malformed_json;
-  e.file = path;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    e.message = "is a directory, not a graph file";
+  Result<std::string> text = read_file_whole(path);
+  if (!text) {
+    GraphError e;
+    e.code = GraphErrorCode::malformed_json;
+    e.file = path;
+    e.message = text.error().message;
     return GraphErrors{e};
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    e.message = "cannot open file";
-    return GraphErrors{e};
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_graph_json(text.str(), path);
+  return parse_graph_json(*text, path);
 }
 
 }  // namespace penumbra::graph

@@ -37,15 +37,21 @@ void TechniqueRegistry::register_passes(exec::PassLibrary& library) const {
 }
 
 Result<graph::GraphDesc> load_technique_graph(const Technique& technique) {
-  auto text = gl::ShaderFileSystem::default_instance().read(technique.graph_file);
+  const gl::ShaderFileSystem& files = gl::ShaderFileSystem::default_instance();
+  auto text = files.read(technique.graph_file);
   if (!text) return text.error();
-  auto graph = graph::parse_graph_json(*text, technique.graph_file);
+  // Errors name the file that was read (a user's override, a plugin's folder), not only its
+  // repository path.
+  auto on_disk = files.disk_path(technique.graph_file);
+  auto graph = graph::parse_graph_json(*text, on_disk ? on_disk->string() : technique.graph_file);
   if (!graph) {
     Error e = graph.errors().front();
     std::string all;
     for (const auto& err : graph.errors()) all += err.to_string() + "\n";
     e.details = all;
-    e.kind = ErrorKind::internal;  // a built-in graph that does not parse is our bug
+    // Bad input (exit 2): the file may be a user's (PENUMBRA_SHADER_DIR, a plugin's folder);
+    // the built-ins' graphs are compiled by the tests, so one of ours cannot get here unseen.
+    e.kind = ErrorKind::bad_input;
     return e;
   }
   return std::move(*graph);

@@ -6,6 +6,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "app/preset.h"
+#include "util/file_read.h"
 #include "plugin/frame_graph.h"
 #include "scene/load_scene.h"
 #include "gl/debug_output.h"
@@ -174,7 +175,7 @@ Status SandboxController::save_preset(const std::string& path) const {
 }
 
 Status SandboxController::load_preset(const std::string& path) {
-  Result<std::string> text = read_text_file(path);
+  Result<std::string> text = read_file_whole(path);
   if (!text) return note(text.error());
   Result<Preset> preset = parse_preset(*text, path);
   if (!preset) return note(preset.error());
@@ -216,6 +217,15 @@ void SandboxController::set_immediate(bool on) {
 // --- viewer and compare -----------------------------------------------------------------------
 
 Status SandboxController::view_resource(const std::string& name) {
+  const auto& resources = primary_->graph().resources;
+  if (!name.empty() && std::none_of(resources.begin(), resources.end(),
+                                    [&](const graph::ResourceDecl& r) { return r.name == name; })) {
+    std::string known;
+    for (const graph::ResourceDecl& r : resources)
+      if (r.kind != graph::ResourceKind::imported) known += (known.empty() ? "" : ", ") + r.name;
+    return note(make_error("technique '" + primary_->technique() + "' has no resource '" + shortened(name) +
+                           "'; resources: " + known));
+  }
   auto& keep = primary_->compile_options().keep_alive;
   if (name == viewer_.resource && (name.empty() || keep == std::vector<std::string>{name}))
     return note({});

@@ -49,18 +49,6 @@ Result<graph::ParameterSet> preset_applied(const Preset& preset, const std::stri
   return next;
 }
 
-Result<std::string> read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    Error e = make_error("cannot open file for reading");
-    e.file = path;
-    return e;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 Status write_text_file(const std::string& path, const std::string& text) {
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);

@@ -29,7 +29,6 @@ Result<graph::ParameterSet> preset_applied(const Preset& preset, const std::stri
                                            const graph::ParameterSet& current);
 
 // File helpers; errors name the path.
-Result<std::string> read_text_file(const std::string& path);
 Status write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace penumbra::sandbox

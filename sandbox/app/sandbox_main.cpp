@@ -8,6 +8,7 @@
 #include "app/script.h"
 #include "app/script_runner.h"
 #include "app/window_host.h"
+#include "util/file_read.h"
 #include "gl/context.h"
 #include "techniques/builtin_techniques.h"
 
@@ -57,7 +58,7 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
   // A bad script is reported before any window opens.
   std::optional<std::vector<ScriptStep>> script;
   if (!o.script.empty()) {
-    auto text = read_text_file(o.script);
+    auto text = read_file_whole(o.script);
     if (!text) return fail(text.error());
     auto parsed = parse_script(*text, o.script);
     if (!parsed) return fail(parsed.error());

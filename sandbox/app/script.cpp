@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <random>
 
 #include <nlohmann/json.hpp>
+
+#include "util/json_text.h"
 
 namespace penumbra::sandbox {
 
@@ -40,18 +43,28 @@ struct StepProblem {
 
 [[noreturn]] void problem(std::string message) { throw StepProblem{std::move(message)}; }
 
+// A value echoed in a message: one short line whatever the input is.
+std::string echo(const json& v) { return shortened(v.dump(), 60); }
+
+// Positions and directions are world units; beyond this a float has no precision left for a
+// camera or light to be meaningful (1e300 becomes inf in a float).
+constexpr float kMaxCoordinate = 1e6f;
+
 std::string need_string(const json& v, const std::string& what) {
-  if (!v.is_string()) problem(what + " must be a string, got " + v.dump());
+  if (!v.is_string()) problem(what + " must be a string, got " + echo(v));
   return v.get<std::string>();
 }
 
 float need_number(const json& v, const std::string& what) {
-  if (!v.is_number()) problem(what + " must be a number, got " + v.dump());
-  return v.get<float>();
+  if (!v.is_number()) problem(what + " must be a number, got " + echo(v));
+  const double d = v.get<double>();
+  if (!std::isfinite(d) || std::fabs(d) > kMaxCoordinate)
+    problem(what + " must be a finite number within +-1e6, got " + echo(v));
+  return static_cast<float>(d);
 }
 
 int need_int(const json& v, const std::string& what, int lo, int hi) {
-  if (!v.is_number_integer()) problem(what + " must be an integer, got " + v.dump());
+  if (!v.is_number_integer()) problem(what + " must be an integer, got " + echo(v));
   auto i = v.get<long long>();
   if (i < lo || i > hi)
     problem(what + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
@@ -61,18 +74,20 @@ int need_int(const json& v, const std::string& what, int lo, int hi) {
 
 glm::vec3 need_vec3(const json& v, const std::string& what) {
   if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
-    problem(what + " must be an array of 3 numbers [x, y, z], got " + v.dump());
-  return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+    problem(what + " must be an array of 3 numbers [x, y, z], got " + echo(v));
+  return {need_number(v[0], what + "[0]"), need_number(v[1], what + "[1]"), need_number(v[2], what + "[2]")};
 }
 
 void only_keys(const json& obj, std::initializer_list<const char*> keys, const std::string& what) {
-  if (!obj.is_object()) problem(what + " must be an object, got " + obj.dump());
-  for (const auto& [k, v] : obj.items())
+  if (!obj.is_object()) problem(what + " must be an object, got " + echo(obj));
+  for (auto it = obj.begin(); it != obj.end(); ++it) {
+    const std::string& k = it.key();
     if (std::none_of(keys.begin(), keys.end(), [&](const char* a) { return k == a; })) {
       std::string list;
       for (const char* a : keys) list += (list.empty() ? "" : ", ") + std::string(a);
-      problem(what + ": unknown key '" + k + "' (expected " + list + ")");
+      problem(what + ": unknown key '" + shortened(k) + "' (expected " + list + ")");
     }
+  }
 }
 
 // A JSON scalar as the text ParameterSet::set_from_string parses ("true", "3", "0.25", "vogel").
@@ -81,33 +96,40 @@ std::string value_text(const json& v, const std::string& key) {
   if (v.is_number_integer()) return std::to_string(v.get<long long>());
   if (v.is_number()) return v.dump();
   if (v.is_string()) return v.get<std::string>();
-  problem("set: value of '" + key + "' must be a boolean, number or string, got " + v.dump());
+  problem("set: value of '" + shortened(key) + "' must be a boolean, number or string, got " + echo(v));
 }
 
 void parse_body(ScriptStep& s, const json& v) {
   switch (s.kind) {
     case StepKind::scene: s.text = need_string(v, "scene"); break;
     case StepKind::technique: s.text = need_string(v, "technique"); break;
-    case StepKind::screenshot:
+    case StepKind::screenshot: {
       s.text = need_string(v, "screenshot");
       if (s.text.empty()) problem("screenshot: the path is empty");
+      // Checked before any frame runs: a long script must not fail at its last step.
+      const std::filesystem::path dir = std::filesystem::path(s.text).parent_path();
+      std::error_code ec;
+      if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
+        problem("screenshot: directory '" + shortened(dir.string()) + "' does not exist");
+      if (std::filesystem::is_directory(s.text, ec)) problem("screenshot: '" + shortened(s.text) + "' is a directory");
       break;
+    }
     case StepKind::reset:
       s.text = v.is_boolean() && v.get<bool>() ? "all" : need_string(v, "reset (\"all\" or a parameter)");
       break;
     case StepKind::set:
-      if (!v.is_object() || v.empty()) problem("set must be a non-empty object {\"name\": value}, got " + v.dump());
+      if (!v.is_object() || v.empty()) problem("set must be a non-empty object {\"name\": value}, got " + echo(v));
       for (const auto& [k, val] : v.items()) s.assignments.emplace_back(k, value_text(val, k));
       break;
     case StepKind::wait: s.number = need_int(v, "wait (frames)", 1, 100000); break;
     case StepKind::shadow_size: s.number = need_int(v, "shadow_size (texels)", 16, 16384); break;
     case StepKind::resize:
-      if (!v.is_array() || v.size() != 2) problem("resize must be [width, height], got " + v.dump());
+      if (!v.is_array() || v.size() != 2) problem("resize must be [width, height], got " + echo(v));
       s.width = need_int(v[0], "resize width (pixels)", 16, 8192);
       s.height = need_int(v[1], "resize height (pixels)", 16, 8192);
       break;
     case StepKind::expect_no_gl_error:
-      if (!v.is_boolean() || !v.get<bool>()) problem("expect_no_gl_error must be true, got " + v.dump());
+      if (!v.is_boolean() || !v.get<bool>()) problem("expect_no_gl_error must be true, got " + echo(v));
       break;
     case StepKind::camera:
       only_keys(v, {"position", "look_at", "yaw", "pitch"}, "camera");
@@ -190,41 +212,58 @@ Error step_error(const ScriptStep& step, const std::string& message) {
   Error e = make_error("script step " + std::to_string(step.index) + " (" + step_kind_name(step.kind) +
                        "): " + message);
   e.where = "/" + std::to_string(step.index);
+  e.file = step.source;
   return e;
 }
 
 Result<std::vector<ScriptStep>> parse_script(const std::string& text, const std::string& source) {
+  auto fail = [&](std::string message, int line = 0, int column = 0) {
+    Error e = make_error(std::move(message));
+    e.file = source;
+    e.line = line;
+    e.column = column;
+    return e;
+  };
+  // Nesting, numbers that overflow, duplicate keys: refused with their position before parsing.
+  if (std::optional<JsonTextProblem> p = scan_json_text(text, kMaxScriptDepth))
+    return fail("script: " + p->message, p->line, p->column);
   json j;
   try {
     j = json::parse(text);
   } catch (const json::parse_error& ex) {
-    Error e = make_error(std::string("script is not valid JSON: ") + ex.what());
-    e.file = source;
-    return e;
+    int line = 0, column = 0;
+    byte_offset_to_line_col(text, ex.byte > 0 ? ex.byte - 1 : 0, line, column);
+    return fail("script is not valid JSON: " + shortened(ex.what(), 200), line, column);
+  } catch (const std::exception& ex) {
+    return fail("script is not valid JSON: " + shortened(ex.what(), 200));
   }
-  if (!j.is_array()) {
-    Error e = make_error("a script must be a JSON array of steps, e.g. [{\"technique\": \"pcss\"}, {\"wait\": 2}]");
-    e.file = source;
-    return e;
-  }
+  if (!j.is_array())
+    return fail("a script must be a JSON array of steps, e.g. [{\"technique\": \"pcss\"}, {\"wait\": 2}]");
+  if (j.size() > kMaxScriptSteps)
+    return fail("script has " + std::to_string(j.size()) + " steps; at most " + std::to_string(kMaxScriptSteps));
   std::vector<ScriptStep> steps;
   for (size_t i = 0; i < j.size(); ++i) {
     const json& item = j[i];
     ScriptStep s;
     s.index = static_cast<int>(i);
+    s.source = source;
     try {
       if (!item.is_object() || item.size() != 1)
         problem("each step must be an object with exactly one key (one of " + valid_step_names() +
-                "), got " + item.dump());
+                "), got " + echo(item));
       const std::string key = item.begin().key();
       auto it = std::find_if(std::begin(kSteps), std::end(kSteps),
                              [&](const StepName& n) { return key == n.key; });
-      if (it == std::end(kSteps)) problem("unknown step '" + key + "' (expected one of " + valid_step_names() + ")");
+      if (it == std::end(kSteps))
+        problem("unknown step '" + shortened(key) + "' (expected one of " + valid_step_names() + ")");
       s.kind = it->kind;
       parse_body(s, item.begin().value());
     } catch (const StepProblem& p) {
-      Error e = make_error("script step " + std::to_string(i) + ": " + p.message);
-      e.file = source;
+      Error e = fail("script step " + std::to_string(i) + ": " + p.message);
+      e.where = "/" + std::to_string(i);
+      return e;
+    } catch (const std::exception& ex) {  // a JSON type/range error the checks above missed
+      Error e = fail("script step " + std::to_string(i) + ": " + shortened(ex.what(), 200));
       e.where = "/" + std::to_string(i);
       return e;
     }

@@ -58,6 +58,7 @@ struct ViewStep {
 struct ScriptStep {
   StepKind kind = StepKind::wait;
   int index = 0;     // position in the script
+  std::string source;  // the script file, named by errors
   std::string text;  // scene, technique, screenshot path, reset target ("all" or a parameter)
   std::vector<std::pair<std::string, std::string>> assignments;  // set: name -> value text
   int number = 0;    // wait frames, shadow size (texels)
@@ -67,6 +68,10 @@ struct ScriptStep {
   CompareStep compare;
   ViewStep view;
 };
+
+// Limits of a script (docs/sandbox.md): steps, and nesting of any value.
+inline constexpr size_t kMaxScriptSteps = 100000;
+inline constexpr int kMaxScriptDepth = 16;
 
 // `source` names the file in errors.
 Result<std::vector<ScriptStep>> parse_script(const std::string& text, const std::string& source);

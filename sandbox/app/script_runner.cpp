@@ -105,7 +105,8 @@ Status run_script_headless(SandboxController& controller, ScriptRunner& runner,
       }
     }
     if (auto path = runner.take_screenshot())
-      if (Status s = controller.save_presentation_png(*path); !s) return s;
+      if (Status s = controller.save_presentation_png(*path); !s)
+        return runner.current() ? step_error(*runner.current(), s.error().to_string()) : s.error();
     if (on_frame)
       if (Status s = on_frame(); !s) return s;
   }

@@ -34,10 +34,15 @@ Result<ParsedArgs> parse_args(const std::vector<std::string>& args, const std::v
     const OptionSpec* spec = nullptr;
     for (const OptionSpec& s : specs)
       if (s.name == name) spec = &s;
-    if (!spec) return make_error("unknown option --" + name + " (see --help)");
+    if (!spec) return make_error("unknown option --" + shortened(name) + " (see --help)");
     if (spec->takes_value && !inline_value) {
       if (i + 1 >= args.size()) return make_error("option --" + name + " needs a value" +
                                                   (spec->value_name.empty() ? "" : " (" + spec->value_name + ")"));
+      // "--size --context osmesa": the value is missing, not "--context".
+      if (args[i + 1].rfind("--", 0) == 0 && args[i + 1].size() > 2)
+        return make_error("option --" + name + " needs a value" +
+                          (spec->value_name.empty() ? "" : " (" + spec->value_name + ")") + ", got option " +
+                          shortened(args[i + 1]));
       value = args[++i];
     }
     if (!spec->takes_value && inline_value) return make_error("option --" + name + " takes no value");

@@ -1,5 +1,5 @@
 #pragma once
-// The results of `penumbra bench` as a table and as DESIGN.md's JSON:
+// The results of `penumbra bench` as a table and as the JSON of docs/evaluation.md:
 //   {"device":..., "renderer":..., "rows":[{"technique":..., "scene":..., "size":...,
 //    "shadow_size":..., "passes":[{"name":..., "ms":...}], "total_ms":...}]}
 #include <string>

@@ -142,10 +142,10 @@ int cmd_techniques(const std::vector<std::string>& argv) {
   for (const plugin::Technique* technique : selected) {
     const plugin::Technique& t = *technique;
     Result<graph::GraphDesc> g = plugin::load_technique_graph(t);
-    if (!g) {  // a registered technique whose graph does not load is a build/plugin bug
-      std::fprintf(stderr, "penumbra techniques: technique '%s': %s\n", t.name.c_str(),
-                   g.error().to_string().c_str());
-      return 1;
+    if (!g) {
+      std::fprintf(stderr, "penumbra techniques: technique '%s': %s\n%s", t.name.c_str(),
+                   g.error().to_string().c_str(), g.error().details.c_str());
+      return g.error().exit_code();
     }
     if (markdown) {
       if (selected.size() > 1) std::printf("### %s\n\n%s\n\n", t.name.c_str(), g->description.c_str());

@@ -1,7 +1,7 @@
 #pragma once
 // A CLI subcommand registers itself with one line in its own file:
 //   static const CommandRegistration reg{"info", "print the GL context ...", cmd_info};
-// Exit codes (DESIGN.md): 0 success, 2 bad input or usage, 1 internal error.
+// Exit codes (docs/architecture.md): 0 success, 2 bad input or usage, 1 internal error.
 #include <functional>
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The results of `penumbra eval` as a table and as DESIGN.md's JSON:
+// The results of `penumbra eval` as a table and as the JSON of docs/evaluation.md:
 //   {"scene":..., "reference":..., "rows":[{"technique":..., "rmse":..., "rmse_penumbra":...,
 //    "mae":..., "max_error":..., "ssim":..., "gpu_ms":...}]}
 #include <string>

@@ -9,7 +9,7 @@
 // below. Reproduce with
 //   build/<dir>/tests/baseline/baseline_reference_tests
 // (PENUMBRA_TEST_OUT=DIR also writes the masks and error heat maps as PNG). On the GPU machine:
-//   ../shared/tools/gpu-bundle.sh build/bl_gpu build/<release>/tests/baseline/baseline_reference_tests
+//   scripts/gpu/bundle.sh build/bl_gpu build/<release>/tests/baseline/baseline_reference_tests
 //   (run, carry build/bl_gpu) source build/bl_gpu/env.sh && PENUMBRA_SHADER_DIR=$PWD
 //     PENUMBRA_TEST_CONTEXT=egl PENUMBRA_TEST_SIZE=1920x1080 PENUMBRA_TEST_FRAMES=60
 //     build/bl_gpu/bin/baseline_reference_tests

@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+
+#include "support/temp_dir.h"
 #include <stb/stb_image.h>
 
 #include <filesystem>
@@ -29,7 +31,7 @@ TEST(TexturePng, SingleChannelIsGreyAndTopRowFirst) {
   gl::Texture t(gl::Format::R32F, 4, 2);
   std::vector<float> v = {0, 0, 0, 0, 1, 1, 1, 1};  // GL row 0 (bottom) black, row 1 (top) white
   t.upload(v.data());
-  fs::path p = fs::temp_directory_path() / "penumbra_png_grey.png";
+  fs::path p = test::fresh_temp_dir("png_grey") / "grey.png";
   ASSERT_TRUE(gl::write_texture_png(t, p.string()));
   Png png = load(p);
   ASSERT_EQ(png.w, 4);
@@ -46,7 +48,7 @@ TEST(TexturePng, DepthIsNormalisedOverItsRange) {
   std::vector<float> v = {0.90f, 0.95f};
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureSubImage2D(t.id(), 0, 0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, v.data());
-  fs::path p = fs::temp_directory_path() / "penumbra_png_depth.png";
+  fs::path p = test::fresh_temp_dir("png_depth") / "depth.png";
   ASSERT_TRUE(gl::write_texture_png(t, p.string()));
   Png png = load(p);
   EXPECT_EQ(png.rgba[0], 0);

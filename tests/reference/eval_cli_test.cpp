@@ -1,4 +1,4 @@
-// `penumbra eval` end to end (OSMesa, 64x48, 16 rays): it writes DESIGN.md's JSON, and bad
+// `penumbra eval` end to end (OSMesa, 64x48, 16 rays): it writes the JSON of docs/evaluation.md, and bad
 // input exits 2 with one message and no output file.
 #include <gtest/gtest.h>
 

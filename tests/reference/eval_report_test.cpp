@@ -1,4 +1,4 @@
-// The eval JSON follows DESIGN.md's schema exactly.
+// The eval JSON follows the schema of docs/evaluation.md exactly.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

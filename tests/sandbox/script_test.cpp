@@ -2,6 +2,8 @@
 // line (no window, no GL).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "app/options.h"
 #include "app/script.h"
 
@@ -100,7 +102,10 @@ std::vector<TechniqueInfo> two_techniques() {
 }
 
 TEST(Script, ExhaustiveScriptVisitsMinMaxDefaultOfEveryParameter) {
-  std::string text = exhaustive_script(two_techniques(), "shots", 480, 320, 512);
+  // Screenshot directories must exist when the script is read: use one that does.
+  const std::string dir = ::testing::TempDir();
+  std::string text = exhaustive_script(two_techniques(), dir + "shots", 480, 320, 512);
+  std::filesystem::create_directories(dir + "shots");
   auto steps = parse_script(text, "generated");
   ASSERT_TRUE(steps) << steps.error().to_string();
   std::vector<std::string> sets, techniques, shots;
@@ -112,8 +117,8 @@ TEST(Script, ExhaustiveScriptVisitsMinMaxDefaultOfEveryParameter) {
   EXPECT_EQ(techniques, (std::vector<std::string>{"a", "b"}));
   EXPECT_EQ(sets, (std::vector<std::string>{"r=0.0", "r=2.0", "r=0.5", "b=false", "b=true", "b=true", "k=x",
                                             "k=y", "k=x", "n=7", "n=3"}));
-  EXPECT_EQ(shots, (std::vector<std::string>{"shots/a.png", "shots/a_compare.png", "shots/b.png",
-                                             "shots/b_compare.png"}));
+  const std::string d = dir + "shots/";
+  EXPECT_EQ(shots, (std::vector<std::string>{d + "a.png", d + "a_compare.png", d + "b.png", d + "b_compare.png"}));
 }
 
 TEST(Script, SoakScriptIsReproducibleAndParses) {

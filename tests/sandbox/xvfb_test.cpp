@@ -3,6 +3,8 @@
 // technique and every parameter's min, max and default is visited with no test change; every
 // screenshot is read back (stb_image) and must not be blank. A missing xvfb-run FAILS the test.
 #include <gtest/gtest.h>
+
+#include "support/temp_dir.h"
 #include <unistd.h>
 
 #include <cstdio>
@@ -55,12 +57,7 @@ RunResult run_in_xvfb(const std::string& xvfb_prefix, const std::string& command
   return r;
 }
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("penumbra_sandbox_xvfb_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return penumbra::test::fresh_temp_dir("sandbox_xvfb_" + name); }
 
 // Only the right half counts: the UI panel (at most 45% of the width) must not be what makes an
 // image "not blank"; the rendered scene must.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/temp_dir.h"
+
 #include "metrics/heat_map.h"
 #include "metrics/mask_metrics.h"
 #include "metrics/penumbra_width.h"
@@ -73,8 +75,7 @@ TEST(Metrics, HeatMapAndPngWrite) {
   ASSERT_TRUE(map);
   EXPECT_EQ(map->pixels[(3 * 16 + 3) * 4 + 0], 255);  // max error -> white
   EXPECT_EQ(map->pixels[0], 0);                      // zero error -> black
-  const auto dir = std::filesystem::temp_directory_path() / "penumbra_metrics_test";
-  std::filesystem::create_directories(dir);
+  const auto dir = test::fresh_temp_dir("metrics_test");
   EXPECT_TRUE(metrics::write_png((dir / "heat.png").string(), *map));
   EXPECT_TRUE(metrics::write_png((dir / "mask.png").string(), ref));
   EXPECT_GT(std::filesystem::file_size(dir / "heat.png"), 50u);
