@@ -1,0 +1,48 @@
+#version 450 core
+// Shadow filtering (section 1), Poisson variant: the hard visibility of the projected shadow map
+// (prepare.comp.glsl) averaged over a disk of diameter W_screen (this pixel's penumbra_width)
+// with the cross-bilateral weights of section 2 (uniform disk domain x range term), giving the
+// shadow mask (1 = lit, 0 = umbra). The centre pixel is always a tap. Background: 1. A receiver
+// facing away from the light: 0 (its own shadow). W_screen = 0: the hard visibility.
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "shadow_common.glsl"
+#include "noise.glsl"
+#include "screen_geometry.glsl"
+#include "range_term.glsl"
+#include "receiver_footprint.glsl"
+#include "poisson_taps.glsl"
+
+layout(r16f, binding = 0) uniform writeonly image2D u_mask;
+uniform sampler2D u_position;   // world position, w = linear view depth
+uniform sampler2D u_normal;     // world-space unit normal
+uniform sampler2D u_projected;  // prepare.comp.glsl: r = hard visibility, b = view depth, a = faces away
+uniform sampler2D u_penumbra;   // W_screen, pixels
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
+  vec4 own = texelFetch(u_projected, p, 0);
+  float width = texelFetch(u_penumbra, p, 0).r;
+  float visibility = own.r;
+  if (own.b <= 0.0) {
+    visibility = 1.0;
+  } else if (own.a > 0.5) {
+    visibility = 0.0;
+  } else if (width > 0.0) {
+    vec3 normal = texelFetch(u_normal, p, 0).xyz;
+    mat2 footprint = receiver_footprint(p, texelFetch(u_position, p, 0).xyz, normal);
+    RangeCentre centre = range_centre(p, own.b, normal);
+    vec2 rotation = poisson_rotation(p);
+    float weight = 1.0, sum = own.r;
+    for (int i = 0; i < u_poisson_taps; ++i) {
+      ivec2 q = p + poisson_offset(i, rotation, 0.5 * width, footprint);
+      if (!inside_screen(q)) continue;
+      vec4 s = texelFetch(u_projected, q, 0);
+      float w = range_weight(centre, q, s.b);
+      weight += w;
+      sum += w * s.r;
+    }
+    visibility = sum / weight;
+  }
+  imageStore(u_mask, p, vec4(clamp(visibility, 0.0, 1.0)));
+}
