@@ -4,6 +4,7 @@
 #include "techniques/baseline/baseline_techniques.h"
 #include "techniques/pmchss/pmchss_technique.h"
 #include "techniques/reference/reference_technique.h"
+#include "techniques/sspcss/sspcss_technique.h"
 
 namespace penumbra {
 
@@ -12,6 +13,7 @@ void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   baseline::register_techniques(registry);
   pmchss::register_technique(registry);
   reference::register_techniques(registry);
+  sspcss::register_technique(registry);
 }
 
 exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry) {
