@@ -5,6 +5,7 @@
 #include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
+#include "techniques/sspcss/passes/sspcss_pass_common.h"
 #include "techniques/sspcss/passes/sspcss_pass_types.h"
 
 namespace penumbra::sspcss {
@@ -26,6 +27,8 @@ class PreparePass final : public exec::PassImpl {
     ctx.bind_image(0, "projected", GL_WRITE_ONLY);
     passes::set_shadow_uniforms(p.program(), ctx.frame());
     p.program().set("u_depth_bias", ctx.real("depth_bias"));
+    set_screen_uniforms(p.program(), ctx.frame());
+    p.program().set("u_view_inverse", glm::inverse(ctx.frame().view()));
     ctx.dispatch_over(p, ctx.texture("projected"));
     return {};
   }
