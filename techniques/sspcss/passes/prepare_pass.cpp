@@ -29,6 +29,7 @@ class PreparePass final : public exec::PassImpl {
     p.program().set("u_depth_bias", ctx.real("depth_bias"));
     set_screen_uniforms(p.program(), ctx.frame());
     p.program().set("u_view_inverse", glm::inverse(ctx.frame().view()));
+    p.program().set("u_subpixel", ctx.boolean("subpixel_hard_shadow") ? 1 : 0);
     ctx.dispatch_over(p, ctx.texture("projected"));
     return {};
   }
@@ -47,6 +48,7 @@ exec::PassType prepare_pass_type() {
       .image_out("projected", {Format::RGBA32F})
       .same_size({"position", "normal", "projected"})
       .real("depth_bias", 0.0002, 0.0, 0.05, "window depth", "Subtracted from the receiver-plane depth")
+      .boolean("subpixel_hard_shadow", true, "2x2 sub-pixel samples per pixel (false: the centre only)")
       .build<PreparePass>();
 }
 
