@@ -47,7 +47,7 @@ exec::PassType prepare_pass_type() {
              "distance), view depth, faces-away flag per pixel (compute)")
       .image_out("projected", {Format::RGBA32F})
       .same_size({"position", "normal", "projected"})
-      .real("depth_bias", 0.0002, 0.0, 0.05, "window depth", "Subtracted from the receiver-plane depth")
+      .real("depth_bias", 0.0002, 0.0, 0.05, "", "Subtracted from the receiver-plane depth")
       .boolean("subpixel_hard_shadow", true, "2x2 sub-pixel samples per pixel (false: the centre only)")
       .build<PreparePass>();
 }

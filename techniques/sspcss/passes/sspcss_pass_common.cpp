@@ -10,9 +10,11 @@ namespace penumbra::sspcss {
 
 using graph::ParamDesc;
 
-// Ranges equal the technique parameters' (sspcss.json), which feed these one to one.
+// Type, valid range and a short text; the technique parameters (sspcss.json) that feed these one
+// to one hold the user-facing default, unit and description, and the same ranges. (The builder
+// wants a default: the technique's.)
 std::vector<ParamDesc> range_params() {
-  return {graph::real_param("depth_sigma", 0.02, 0.001, 1.0, "fraction of view depth",
+  return {graph::real_param("depth_sigma", 0.02, 0.001, 1.0, "",
                             "Range-term sigma, relative to the centre's view depth"),
           graph::bool_param("range_term", true, "Weight taps by their depth difference (cross-bilateral)")};
 }
@@ -24,12 +26,12 @@ ParamDesc footprint_param() {
 
 std::vector<ParamDesc> search_params() {
   return {graph::real_param("light_size_scale", 1.0, 0.0, 10.0, "", "Multiplier on the light's diameter"),
-          graph::real_param("max_penumbra_px", 64.0, 1.0, 256.0, "pixels",
+          graph::real_param("max_penumbra_px", 64.0, 1.0, 256.0, "",
                             "Clamp of W_screen and of the blocker-search width")};
 }
 
 ParamDesc fixed_radius_param() {
-  return graph::real_param("fixed_radius_px", 0.0, 0.0, 128.0, "pixels",
+  return graph::real_param("fixed_radius_px", 0.0, 0.0, 128.0, "",
                            "> 0: W_screen = 2 x this on every receiver (benchmark/debug)");
 }
 
