@@ -19,7 +19,9 @@
 #        SHADOW_SIZES="1024 2048 4096 8192" SCREEN_SIZES="1280x720 1920x1080 2560x1440 3840x2160"
 #        RADII="8 16 32" SIZE=1920x1080 (the screen of parts 1 and 3) SHADOW=2048 (parts 2 and 3)
 #
-# On the GPU machine, with the bundled binary (see docs/gpu-machine.md):
+# On the GPU machine (docs/gpu-machine.md): bundle here with
+#   scripts/gpu/bundle.sh .gpu build/release/sandbox/penumbra
+# then, in a device run carrying .gpu (21 bench runs; a few minutes of device time at FRAMES=200):
 #   source .gpu/env.sh && scripts/gpu/sspcss-bench.sh .gpu/bin/penumbra $OUT/sspcss
 # Writes OUTDIR/*.json (one per bench run), OUTDIR/info.txt and OUTDIR/sspcss-bench.md.
 # A quick proof that it works on llvmpipe (numbers meaningless):
