@@ -41,6 +41,32 @@ bool value_has_type(ParamType type, const ParamValue& v) {
   return false;
 }
 
+// Up to `count` candidates nearest to `name` by edit distance (a typo's likely intent).
+std::vector<std::string> closest_names(const std::string& name, const std::vector<std::string>& candidates, size_t count) {
+  auto distance = [](const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j) {
+        size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diagonal = up;
+      }
+    }
+    return row[b.size()];
+  };
+  const std::string probe = name.substr(0, 64);
+  std::vector<std::pair<size_t, std::string>> ranked;
+  for (const std::string& c : candidates) ranked.emplace_back(distance(probe, c), c);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> out;
+  for (size_t i = 0; i < ranked.size() && i < count && ranked[i].first <= std::max<size_t>(3, probe.size() / 2); ++i)
+    out.push_back(ranked[i].second);
+  return out;
+}
+
 std::string range_text(double min, double max) {
   std::ostringstream s;
   s << "[" << min << ", " << max << "]";
@@ -260,10 +286,13 @@ void validate_declarations(CompileState& s) {
     if (!pass_names.emplace(p.name, 0).second)
       s.error(GraphErrorCode::duplicate_name, pass_location(p), "pass '" + p.name + "' is declared twice");
     if (!bp.type) {
-      std::string known;
-      for (const auto& n : s.registry.names()) known += (known.empty() ? "" : ", ") + n;
+      const std::vector<std::string> known = s.registry.names();
+      std::string near;
+      for (const std::string& n : closest_names(p.type, known, 3)) near += (near.empty() ? "" : ", ") + n;
       s.error(GraphErrorCode::unknown_pass_type, pass_location(p),
-              "pass '" + p.name + "': unknown pass type '" + p.type + "'; known: " + known);
+              "pass '" + p.name + "': unknown pass type '" + shortened(p.type) + "'" +
+                  (near.empty() ? "" : "; closest: " + near) + " (" + std::to_string(known.size()) +
+                  " types are registered; `penumbra graph --pass-types` lists them)");
     } else {
       validate_slots(s, bp);
       validate_params(s, bp);

@@ -18,6 +18,7 @@ namespace {
 
 const char* kHelp =
     "usage: penumbra graph FILE.json [--plan] [--dot OUT.dot] [--screen WxH] [--shadow N]\n"
+    "       penumbra graph --pass-types\n"
     "                      [--set k=v]... [--no-reuse] [--extended-lifetimes] [--frame | --no-frame]\n"
     "Compiles a render-graph file (docs/graph-format.md) against every built-in pass type and\n"
     "reports errors or the plan. A technique graph (one that reads the frame's scene, camera,\n"
@@ -33,11 +34,43 @@ const char* kHelp =
     "  --frame               always compose into the frame (G-buffer prologue, lighting\n"
     "                        epilogue; docs/writing-a-technique.md)\n"
     "  --no-frame            never compose: compile the file as it is\n"
+    "  --pass-types          list every registered pass type with its slots and parameters\n"
     "Exit codes: 0 ok, 2 invalid input, 1 internal error.\n";
 
 int usage_error(const std::string& message) {
   std::cerr << "penumbra graph: " << message << " (see --help)\n";
   return 2;
+}
+
+// What a graph file can use: every pass type with its slots (access, usage, formats) and
+// parameters (type, default, range).
+int print_pass_types() {
+  const graph::PassTypeRegistry& registry = cli_pass_registry();
+  for (const std::string& name : registry.names()) {
+    const graph::PassTypeDecl& t = *registry.find(name);
+    std::cout << name << (t.side_effect ? " (side effect)" : "") << "\n  " << t.description << "\n";
+    for (const graph::SlotDecl& slot : t.slots) {
+      std::cout << "  slot  " << slot.name << ": " << graph::access_name(slot.access) << " "
+                << graph::slot_kind_name(slot.kind) << ", " << graph::usage_name(slot.usage);
+      if (!slot.formats.empty()) {
+        std::cout << ", ";
+        for (size_t i = 0; i < slot.formats.size(); ++i) std::cout << (i ? "|" : "") << graph::format_name(slot.formats[i]);
+      }
+      std::cout << (slot.required ? "" : " (optional)") << "\n";
+    }
+    for (const graph::ParamDesc& d : t.params) {
+      std::cout << "  param " << d.name << ": " << graph::param_type_name(d.type) << " = "
+                << graph::param_value_to_string(d.default_value);
+      if (d.has_range()) std::cout << " in [" << d.min << ", " << d.max << "]";
+      if (!d.options.empty()) {
+        std::cout << " of ";
+        for (size_t i = 0; i < d.options.size(); ++i) std::cout << (i ? "|" : "") << d.options[i];
+      }
+      if (!d.unit.empty()) std::cout << " " << d.unit;
+      std::cout << "\n";
+    }
+  }
+  return 0;
 }
 
 bool parse_positive(std::string_view text, int& out, int max) {
@@ -62,6 +95,8 @@ int run(const std::vector<std::string>& args) {
     if (a == "--help" || a == "-h") {
       std::cout << kHelp;
       return 0;
+    } else if (a == "--pass-types") {
+      return print_pass_types();
     } else if (a == "--plan") {
       print_plan = true;
     } else if (a == "--frame") {
