@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "metrics/heat_map.h"
+#include "raytraced_reference.h"
 #include "support/test_context.h"
 #include "techniques/builtin_techniques.h"
 
@@ -94,6 +95,23 @@ void TechniqueRig::gbuffer(std::vector<glm::vec3>& positions, std::vector<glm::v
                            : glm::vec3(std::numeric_limits<float>::quiet_NaN());
       normals[dst] = glm::vec3(n[src * 4], n[src * 4 + 1], n[src * 4 + 2]);
     }
+}
+
+metrics::MaskImage exact_hard_reference(TechniqueRig& rig, const scene::Scene& scene, int pixel_samples) {
+  std::vector<glm::vec3> positions, normals;
+  metrics::CoverageMask coverage;
+  rig.gbuffer(positions, normals, coverage);
+  Result<reference::RayScene> rs = reference::RayScene::build(scene);
+  EXPECT_TRUE(rs);
+  if (!rs) return {};
+  scene::Light light = rig.session().light();
+  light.size = 0.0f;
+  reference::TraceOptions options{.samples = 1};
+  options.pixel_samples = pixel_samples;
+  options.camera = rig.session().camera();
+  const plugin::TechniqueSession& s = rig.session();
+  return reference::trace_visibility(*rs, light, positions, normals, s.settings().screen_w, s.settings().screen_h,
+                                     options, coverage);
 }
 
 void save_for_inspection(const std::string& name, const metrics::MaskImage& image) {
