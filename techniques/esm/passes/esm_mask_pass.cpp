@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "exec/pass_decl_builder.h"
+#include "gl/texture.h"
 #include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
 #include "techniques/esm/passes/esm_pass_common.h"
@@ -34,7 +35,8 @@ class MaskPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_position", "position");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
-    ctx.bind_sampled(p, "u_esm", "esm");
+    if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
+    ctx.bind_sampled(p, "u_esm", "esm", nearest_.id());  // texel fetches and one gather
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     const gl::Program& prog = p.program();
     passes::set_shadow_uniforms(prog, ctx.frame());  // faces_away_from_light()
@@ -48,6 +50,9 @@ class MaskPass final : public exec::PassImpl {
     ctx.dispatch_over(p, mask.width(), mask.height());
     return {};
   }
+
+ private:
+  gl::Sampler nearest_;
 };
 
 }  // namespace

@@ -27,7 +27,7 @@ layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_position;
 uniform sampler2D u_normal;
 uniform sampler2D u_shadow_map;   // the depth pass's biased depth (nearest texel fetches)
-uniform sampler2D u_esm;          // RGBA32F extended map (texel fetches)
+uniform sampler2D u_esm;          // RGBA32F extended map (texel fetches, a gather of the mask)
 uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
 uniform float u_boundary;         // lit-ness of the shadow boundary (edge_transfer at the edge + shift)
 uniform float u_aa_width;         // pixels; 0 = a binary edge
@@ -78,10 +78,18 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   vec2 st = c.xy - 0.5;
   ivec2 i0 = clamp(ivec2(floor(st)), ivec2(rect.xy), ivec2(rect.xy + rect.z) - 2);
   vec2 f = clamp(st - vec2(i0), 0.0, 1.0);
+  // Point filtering: the nearest of the four.
+  ivec2 nearest = i0 + ivec2(f.x >= 0.5 ? 1 : 0, f.y >= 0.5 ? 1 : 0);
+  bool a = z > texelFetch(u_shadow_map, nearest, 0).r;
+  // Away from silhouettes (most receivers) no texel of the footprint has a quad: one gather of
+  // the mask channel says so, and the answer is the plain test's.
+  vec4 masks = textureGather(u_esm, (vec2(i0) + 1.0) / vec2(textureSize(u_esm, 0)), 3);
+  if (all(lessThan(masks, vec4(0.5)))) return a ? 0.0 : 1.0;
   vec4 t00 = texelFetch(u_esm, i0, 0), t10 = texelFetch(u_esm, i0 + ivec2(1, 0), 0);
   vec4 t01 = texelFetch(u_esm, i0 + ivec2(0, 1), 0), t11 = texelFetch(u_esm, i0 + ivec2(1, 1), 0);
   float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
   float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
+  vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);
   // The receiver's tangent plane in the map: where the neighbouring pixels' camera rays meet it
   // (texels and window depth per pixel along x and y).
   vec2 px = vec2(pixel) + 0.5;
@@ -91,11 +99,6 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   // surface running into its own silhouette edge (an open sheet seen from its lit side, the lit
   // facet next to a sharp edge) is not shadowed by that edge.
   float edge_bias = receiver_slope(cx, cy) * (BAND_IN + 1.5);
-  // Point filtering: the nearest of the four.
-  bool right = f.x >= 0.5, up = f.y >= 0.5;
-  vec4 tn = up ? (right ? t11 : t01) : (right ? t10 : t00);
-  float dn = up ? (right ? d11 : d01) : (right ? d10 : d00);
-  bool a = z > dn;
   // b: the footprint has quads and the receiver is behind every one of their edges. Where it is
   // in front of one (overlapping quads keep the farthest edge depth, MAX), the edge distances
   // say nothing reliable about it: plain shadow mapping (the paper: near overlaps the method
