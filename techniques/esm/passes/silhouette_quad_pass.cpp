@@ -85,7 +85,7 @@ exec::PassType silhouette_quad_pass_type() {
       .enumeration("blend", "max", {"max", "overwrite"},
                    "max: MAX blending (one pass); overwrite: the two-pass fallback's first pass")
       .real("hidden_edge_tolerance", 2.0, 0.0, 1000.0, "texels",
-            "An edge is hidden where a surface is nearer the light by more than this many texel footprints");
+            "An edge is hidden where a surface is nearer the light than it (or than its lit facet's plane, inside) by more than this");
   graph::PassTypeDecl decl = b.decl();
   decl.slots.push_back(blended_attachment("esm", Format::RGBA32F));
   return {decl, [] { return std::make_unique<SilhouetteQuadPass>(); }};
