@@ -118,3 +118,17 @@ TEST(EsmPointLight, SixFacesNoSeams) {
     else EXPECT_EQ(nearest, 1.0f) << "unused tile " << t;
   }
 }
+
+// Six faces need a map of at least three 16-texel tiles a side; smaller is a clear bad-input
+// error, not a broken picture.
+TEST(EsmPointLight, MapTooSmallForSixFacesIsAnError) {
+  test::TechniqueRig rig(64, 64, 32);
+  rig.set_scene(test::point_lit_room(kLight));
+  rig.use("esm");
+  Status s = rig.try_render();
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().to_string().find("at least 48 texels"), std::string::npos) << s.error().to_string();
+  EXPECT_EQ(s.error().exit_code(), 2);
+  rig.set_shadow_size(48);
+  rig.render();
+}
