@@ -15,11 +15,13 @@ Result<EsmViews> frame_views(const exec::PassContext& ctx, int map_size) {
 void set_view_uniforms(const gl::Program& p, const EsmViews& v) {
   const GLuint id = p.id();
   for (size_t i = 0; i < v.faces.size(); ++i) {
-    const std::string index = "[" + std::to_string(i) + "]";
-    glProgramUniformMatrix4fv(id, p.uniform_location(("u_face_view_proj" + index).c_str()), 1, GL_FALSE,
-                              &v.faces[i].view_proj[0][0]);
+    // (Appending, not "[" + to_string(i): GCC 12 warns falsely (-Wrestrict) on that form.)
+    std::string matrix = "u_face_view_proj[", rect_name = "u_face_rect[";
+    matrix.append(std::to_string(i)).append("]");
+    rect_name.append(std::to_string(i)).append("]");
+    glProgramUniformMatrix4fv(id, p.uniform_location(matrix.c_str()), 1, GL_FALSE, &v.faces[i].view_proj[0][0]);
     const glm::vec4 rect(glm::vec2(v.faces[i].origin), static_cast<float>(v.faces[i].size), 0.0f);
-    glProgramUniform4fv(id, p.uniform_location(("u_face_rect" + index).c_str()), 1, &rect[0]);
+    glProgramUniform4fv(id, p.uniform_location(rect_name.c_str()), 1, &rect[0]);
   }
   p.set("u_face_count", static_cast<int>(v.faces.size()));
   p.set("u_esm_light", v.light);
