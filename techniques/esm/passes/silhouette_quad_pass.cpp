@@ -46,7 +46,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       glEnablei(GL_BLEND, 0);
       glBlendEquationi(0, GL_MAX);  // the factors do not apply to MAX
     } else {
-      glColorMaski(0, GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);  // keep the occluder depth (g)
+      glColorMaski(0, GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);  // r, b, a (g is unused)
     }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);

@@ -9,8 +9,8 @@
 // Channels of the RGBA32F map:
 //   r  1 - edge_transfer(t): the INVERTED lit-ness, so MAX blending of overlapping quads keeps
 //      the most shadowed one ("minimal distance, maximal value", section 4.1); 0 = no quad
-//   g  occluder depth: window depth of the nearest caster, unbiased (the paper's depth channel;
-//      the shadow test compares against the biased depth attachment, as plain shadow mapping)
+//   g  unused (0): the map depth, the paper's green channel, is the depth attachment, which the
+//      quads and the shadow test read (with its polygon offset, as plain shadow mapping)
 //   b  edge depth: window depth of the silhouette edge at this texel (MAX: the farthest edge)
 //   a  silhouette mask: 1 where a quad wrote
 const float BAND_OUT = 2.8284271;  // texels outside the edge
