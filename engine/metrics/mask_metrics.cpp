@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "metrics/edge_error.h"
+
 namespace penumbra::metrics {
 namespace {
 
@@ -105,6 +107,10 @@ Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& ref, co
   Result<double> ssim = masked_ssim(test, ref, coverage);
   if (!ssim) return ssim.error();
   e.ssim = *ssim;
+  Result<EdgeError> edge = edge_error(test, ref, coverage);
+  if (!edge) return edge.error();
+  e.edge_error = edge->error;
+  e.edge_pixels = edge->pixels;
   return e;
 }
 

@@ -19,8 +19,10 @@ struct MaskErrors {
   double rmse_penumbra = 0.0;  // RMSE over receiver pixels with 0.02 < ref < 0.98 (0 if none)
   double max_error = 0.0;      // max |test - ref|
   double ssim = 1.0;           // masked Gaussian-window SSIM, see masked_ssim()
+  double edge_error = 0.0;     // mean |test - ref| within 3 px of a reference edge (metrics/edge_error.h)
   size_t pixels = 0;           // receiver pixels compared
   size_t penumbra_pixels = 0;
+  size_t edge_pixels = 0;      // pixels of the edge band
 };
 
 // Sizes must match (and coverage, when not empty, must have width * height entries).

@@ -143,6 +143,44 @@ Result<Mesh> convert_primitive(const tinygltf::Model& model, const tinygltf::Pri
   return mesh;
 }
 
+// The KHR_lights_punctual light a node refers to, placed with the node's world transform.
+Result<SceneLight> convert_light(const tinygltf::Model& model, int index, const glm::mat4& world,
+                                 const std::string& file, const std::string& where) {
+  if (index < 0 || static_cast<size_t>(index) >= model.lights.size())
+    return file_error(file, "KHR_lights_punctual light index " + std::to_string(index) + " does not exist (" +
+                                std::to_string(model.lights.size()) + " lights)", where);
+  const tinygltf::Light& gl = model.lights[static_cast<size_t>(index)];
+  SceneLight out;
+  out.name = gl.name;
+  Light& l = out.light;
+  if (gl.type == "directional") l.type = LightType::directional;
+  else if (gl.type == "spot") l.type = LightType::spot;
+  else if (gl.type == "point") l.type = LightType::point;
+  else
+    return file_error(file, "KHR_lights_punctual light " + std::to_string(index) + " has type '" + gl.type +
+                                "'; expected directional, spot or point", where);
+  l.position = glm::vec3(world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  const glm::vec3 forward = glm::vec3(world * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f));
+  l.direction = glm::length(forward) > 0.0f ? glm::normalize(forward) : glm::vec3(0.0f, 0.0f, -1.0f);
+  l.size = 0.0f;
+  if (gl.color.size() == 3) l.color = glm::vec3(gl.color[0], gl.color[1], gl.color[2]);
+  l.intensity = static_cast<float>(gl.intensity);
+  out.range = static_cast<float>(gl.range);
+  if (l.type == LightType::spot) {
+    l.spot_angle = static_cast<float>(gl.spot.outerConeAngle);
+    out.inner_cone_angle = static_cast<float>(gl.spot.innerConeAngle);
+  }
+  return out;
+}
+
+// The light index of a node's KHR_lights_punctual extension, or -1.
+int node_light(const tinygltf::Node& node) {
+  const auto it = node.extensions.find("KHR_lights_punctual");
+  if (it == node.extensions.end() || !it->second.IsObject() || !it->second.Has("light")) return -1;
+  const tinygltf::Value& v = it->second.Get("light");
+  return v.IsNumber() ? v.GetNumberAsInt() : -1;
+}
+
 glm::mat4 local_transform(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) {
     glm::dmat4 m = glm::make_mat4(node.matrix.data());  // glTF is column-major like GLM
@@ -218,6 +256,11 @@ Result<Scene> load_gltf(const std::string& path) {
     if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < model.meshes.size())
       for (size_t k = 0; k < count[static_cast<size_t>(node.mesh)]; ++k)
         scene.instances.push_back({static_cast<uint32_t>(first[static_cast<size_t>(node.mesh)] + k), world});
+    if (const int light = node_light(node); light >= 0 || node.extensions.count("KHR_lights_punctual")) {
+      Result<SceneLight> l = convert_light(model, light, world, path, "node " + std::to_string(ni) + " '" + node.name + "'");
+      if (!l) return l.error();
+      scene.lights.push_back(std::move(*l));
+    }
     for (int child : node.children)
       if (Status s = visit(child, world, depth + 1); !s) return s;
     return {};

@@ -4,6 +4,11 @@
 // normals are generated when missing), TEXCOORD_0, node hierarchy (matrix or TRS), base colour
 // factor and texture, alpha mode OPAQUE/MASK/BLEND with cutoff, double-sided.
 // Not supported (rejected with an Error): other primitive modes, sparse accessors.
+// KHR_lights_punctual: every directional, spot and point light a node of the default scene
+// places becomes a SceneLight (Scene::lights) with the node's world position and direction
+// (glTF lights shine down the node's local -Z), colour, intensity (copied as is: lux for
+// directional, candela otherwise), range and cone angles; size 0 (punctual). A light index out
+// of range or an unknown type is an Error naming the node.
 // Ignored: skins, animations, cameras, other textures (normal, metal-rough, ...), samplers
 // (wrap = repeat is assumed).
 //

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -35,9 +37,68 @@ static glm::mat4 light_view(const Light& light) {
   return glm::lookAt(light.position, light.position + light.direction, b);
 }
 
+const char* light_type_name(LightType type) {
+  switch (type) {
+    case LightType::directional: return "directional";
+    case LightType::spot: return "spot";
+    case LightType::point: return "point";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// A point light outside `bounds`: a square perspective frustum from the light towards the
+// bounds' centre, just wide enough for every corner. Inside (or too close for
+// kMaxPointFrustumHalfAngleDeg) no single frustum sees the scene: `unsupported` says why.
+ShadowFrustum point_frustum(const Light& light, const Bounds& bounds) {
+  ShadowFrustum f;
+  f.orthographic = false;
+  const glm::vec3 p = light.position;
+  const bool inside = glm::all(glm::greaterThanEqual(p, bounds.min)) && glm::all(glm::lessThanEqual(p, bounds.max));
+  const glm::vec3 to_centre = bounds.center() - p;
+  if (inside || glm::length(to_centre) < 1e-6f) {
+    f.unsupported = "a point light inside the scene bounds needs a shadow map in every direction; "
+                    "this technique renders one frustum (use 'esm', which renders six faces, or move the light outside the bounds)";
+    return f;
+  }
+  const glm::vec3 dir = glm::normalize(to_centre);
+  glm::vec3 t, b;
+  emitter_basis(dir, t, b);
+  f.view = glm::lookAt(p, p + dir, b);
+  float depth_min = std::numeric_limits<float>::max(), depth_max = 0.0f, tan_max = 0.0f;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 c((i & 1) ? bounds.max.x : bounds.min.x, (i & 2) ? bounds.max.y : bounds.min.y,
+                      (i & 4) ? bounds.max.z : bounds.min.z);
+    const glm::vec3 v = glm::vec3(f.view * glm::vec4(c, 1.0f));
+    const float d = -v.z;
+    depth_min = std::min(depth_min, d);
+    depth_max = std::max(depth_max, d);
+    if (d > 0.0f) tan_max = std::max(tan_max, std::max(std::abs(v.x), std::abs(v.y)) / d);
+    else tan_max = std::numeric_limits<float>::max();
+  }
+  const float max_tan = std::tan(glm::radians(kMaxPointFrustumHalfAngleDeg));
+  if (tan_max > max_tan) {
+    f.unsupported = "the point light is so close to the scene bounds that one frustum would need more than " +
+                    std::to_string(static_cast<int>(kMaxPointFrustumHalfAngleDeg)) +
+                    " degrees half-angle; use 'esm' (six faces) or move the light further out";
+    return f;
+  }
+  const float pad = 0.01f * (depth_max - depth_min) + 1e-4f;
+  f.far_plane = std::max(depth_max + pad, 1e-2f);
+  f.near_plane = std::max(depth_min - pad, 1e-3f * f.far_plane);
+  f.tan_half_fov = tan_max * 1.01f;
+  f.proj = glm::perspective(2.0f * std::atan(f.tan_half_fov), 1.0f, f.near_plane, f.far_plane);
+  f.view_proj = f.proj * f.view;
+  return f;
+}
+
+}  // namespace
+
 ShadowFrustum shadow_frustum(const Light& light, const Bounds& bounds_in) {
   Bounds bounds = bounds_in;
   if (bounds.empty()) { bounds.extend(glm::vec3(-1.0f)); bounds.extend(glm::vec3(1.0f)); }
+  if (light.type == LightType::point) return point_frustum(light, bounds);
   ShadowFrustum f;
   f.view = light_view(light);
   // Bounds corners in light space: x,y across the emitter plane, -z = depth from the light.
@@ -66,6 +127,7 @@ ShadowFrustum shadow_frustum(const Light& light, const Bounds& bounds_in) {
     const float fov = std::clamp(2.0f * light.spot_angle, glm::radians(1.0f), glm::radians(170.0f));
     f.proj = glm::perspective(fov, 1.0f, f.near_plane, f.far_plane);
     f.width_world = 0.0f;
+    f.tan_half_fov = std::tan(0.5f * fov);
   }
   f.view_proj = f.proj * f.view;
   return f;
@@ -95,15 +157,12 @@ static glm::vec2 concentric_disk(glm::vec2 u) {
   return r * glm::vec2(std::cos(theta), std::sin(theta));
 }
 
-std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32_t seed) {
-  std::vector<glm::vec3> points;
+std::vector<glm::vec2> unit_disk_samples(int count, uint32_t seed) {
+  std::vector<glm::vec2> points;
   if (count <= 0) return points;
   int rows = static_cast<int>(std::sqrt(static_cast<double>(count)));
   while (rows > 1 && count % rows != 0) --rows;
   const int cols = count / rows;
-  glm::vec3 t, b;
-  emitter_basis(glm::normalize(light.direction), t, b);
-  const float radius = light.radius();
   points.reserve(static_cast<size_t>(count));
   for (int r = 0; r < rows; ++r) {
     for (int c = 0; c < cols; ++c) {
@@ -112,11 +171,31 @@ std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32
       const uint32_t h2 = pcg_hash(h1 ^ pcg_hash(stratum * 2u + 1u));
       const glm::vec2 u((static_cast<float>(c) + unit_float(h1)) / static_cast<float>(cols),
                         (static_cast<float>(r) + unit_float(h2)) / static_cast<float>(rows));
-      const glm::vec2 d = concentric_disk(u) * radius;
-      points.push_back(light.position + d.x * t + d.y * b);
+      points.push_back(concentric_disk(u));
     }
   }
   return points;
+}
+
+std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32_t seed) {
+  glm::vec3 t, b;
+  emitter_basis(glm::normalize(light.direction), t, b);
+  const float radius = light.radius();
+  std::vector<glm::vec3> points;
+  for (const glm::vec2& u : unit_disk_samples(count, seed)) {
+    const glm::vec2 d = u * radius;
+    points.push_back(light.position + d.x * t + d.y * b);
+  }
+  return points;
+}
+
+glm::vec3 point_light_sample(const Light& light, const glm::vec2& disk, const glm::vec3& receiver) {
+  const glm::vec3 facing = light.position - receiver;
+  if (light.size <= 0.0f || glm::dot(facing, facing) < 1e-20f) return light.position;
+  glm::vec3 t, b;
+  emitter_basis(glm::normalize(facing), t, b);
+  const glm::vec2 d = disk * light.radius();
+  return light.position + d.x * t + d.y * b;
 }
 
 }  // namespace penumbra::scene
@@ -134,9 +213,13 @@ std::vector<LightSample> light_samples(const Light& light, const Bounds& bounds,
   const glm::vec3 dir = glm::normalize(light.direction);
   const float distance = emitter_distance(light, bounds);
   const glm::vec3 target = light.position + distance * dir;
-  for (const glm::vec3& p : light_sample_points(light, count, seed)) {
+  const std::vector<glm::vec3> points = light_sample_points(light, count, seed);
+  const std::vector<glm::vec2> disk = unit_disk_samples(count, seed);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3& p = points[i];
     LightSample s;
     s.point = p;
+    s.disk = disk[i];
     if (light.type == LightType::directional) {
       s.direction = glm::normalize(target - p);
       s.is_point = false;

@@ -13,11 +13,16 @@
 //    Penumbra width, world units, for a blocker h above the receiver along the light:
 //    w = h * size / D (similar triangles, the angular form of Fernando 2005, eq. 1).
 //  - spot: the disk sits at `position` and faces `direction`; the cone half-angle is spot_angle.
+//  - point: light in every direction from `position`; its emitter is a sphere of diameter
+//    `size`, which every receiver sees as the disk through `position` facing it. `direction`
+//    only orients the single frustum that one-map techniques fit to the scene (see
+//    shadow_frustum); ESM renders six faces instead (techniques/esm).
 //
 //   Light l = directional_light_for(bounds, glm::normalize(glm::vec3(-1, -2, -1)), 0.05f);
 //   ShadowFrustum f = shadow_frustum(l, bounds);     // for the shadow-map pass
 //   auto pts = light_sample_points(l, 256, 0);       // for the references
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -26,7 +31,10 @@ namespace penumbra::scene {
 
 struct Bounds;
 
-enum class LightType { directional, spot };
+enum class LightType { directional, spot, point };
+
+// "directional", "spot", "point".
+const char* light_type_name(LightType type);
 
 struct Light {
   LightType type = LightType::directional;
@@ -57,11 +65,24 @@ struct ShadowFrustum {
   // Orthographic only: width (= height, square) of the frustum in world units, to convert a
   // world size into shadow-map UV: uv = world / width_world. 0 for spot lights.
   float width_world = 0.0f;
+  // Perspective only: tan of the half field of view (square frustum); the frustum is
+  // 2 * tan_half_fov wide at distance 1. 0 for directional lights.
+  float tan_half_fov = 0.0f;
+  // Empty when one frustum covers the scene. Otherwise why it cannot: a point light inside
+  // the scene bounds (or so close that the frustum would need more than kMaxPointFrustumHalfAngleDeg),
+  // which a single shadow map cannot see; passes that need this frustum return this as an Error.
+  std::string unsupported;
 };
+
+// Widest half-angle of the frustum fitted to the scene for a point light outside the bounds.
+inline constexpr float kMaxPointFrustumHalfAngleDeg = 80.0f;
 
 // directional: orthographic, square, fitted to `bounds` as seen from the emitter plane, near/far
 // fitted to the bounds' depth range. spot: perspective with fov = 2 * spot_angle, near/far fitted
-// to the bounds' distance along `direction` (near >= 1e-3 x far).
+// to the bounds' distance along `direction` (near >= 1e-3 x far). point: when the light is
+// outside the bounds, a spot frustum from `position` towards the bounds' centre whose square
+// field of view just contains the bounds' corners (the light's `direction` is not used);
+// inside them (or with a half-angle above kMaxPointFrustumHalfAngleDeg), `unsupported` says so.
 ShadowFrustum shadow_frustum(const Light& light, const Bounds& bounds);
 
 // Orthonormal basis (tangent, bitangent) of the emitter plane; deterministic for a direction so
@@ -71,8 +92,17 @@ void emitter_basis(const glm::vec3& direction, glm::vec3& tangent, glm::vec3& bi
 // M world-space points on the emitter disk: M = rows x cols strata of the unit square (rows =
 // the largest divisor of M not above sqrt(M)), each jittered by a hash of (seed, stratum), then
 // mapped to the disk with Shirley & Chiu's concentric mapping (area-preserving, so strata stay
-// equal-area on the disk). The ONE sampling of the light used by both references.
+// equal-area on the disk). The ONE sampling of the light used by both references. Point lights:
+// the disk facing `direction` (the ray tracer turns it to face each receiver: point_light_sample).
 std::vector<glm::vec3> light_sample_points(const Light& light, int count, uint32_t seed);
+
+// The same M stratified points on the UNIT disk (light_sample_points scales them by the radius
+// and places them in the emitter plane).
+std::vector<glm::vec2> unit_disk_samples(int count, uint32_t seed);
+
+// Point lights: the emitter point of unit-disk sample `disk` as seen from `receiver` (the
+// sphere's silhouette disk through `position`, facing the receiver).
+glm::vec3 point_light_sample(const Light& light, const glm::vec2& disk, const glm::vec3& receiver);
 
 // Directional lights: distance (world units, along `direction`) from the emitter plane to the
 // centre of `bounds`, never below the emitter radius. Spot lights: 0 (not used).
@@ -81,10 +111,13 @@ float emitter_distance(const Light& light, const Bounds& bounds);
 // What a reference traces towards for each light sample (the same M stratified points as
 // light_sample_points): spot lights, the point itself (finite ray, `is_point` true);
 // directional lights, the unit direction from the light INTO the scene of that sample's
-// parallel light (rays from a receiver go along -direction, to infinity).
+// parallel light (rays from a receiver go along -direction, to infinity); point lights, the
+// point of the disk facing `direction` and its unit-disk coordinate `disk`, from which the
+// tracer places it on the disk facing each receiver (point_light_sample).
 struct LightSample {
-  glm::vec3 point{0.0f};      // spot: emitter point
+  glm::vec3 point{0.0f};      // spot, point: emitter point
   glm::vec3 direction{0.0f};  // directional: unit, light -> scene
+  glm::vec2 disk{0.0f};       // unit-disk coordinate of the sample
   bool is_point = true;
 };
 std::vector<LightSample> light_samples(const Light& light, const Bounds& bounds, int count, uint32_t seed);

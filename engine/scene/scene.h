@@ -70,6 +70,15 @@ struct Bounds {
   float radius() const { return 0.5f * glm::length(max - min); }  // of the bounding sphere
 };
 
+// A light placed by the file (glTF KHR_lights_punctual): not used for shading by itself, the
+// scene's `light` stays the default; tools pick one of these to replace it.
+struct SceneLight {
+  std::string name;
+  Light light;        // world-space position/direction from the node; size 0 (punctual)
+  float range = 0.0f; // glTF range, world units; 0 = infinite
+  float inner_cone_angle = 0.0f;  // spot: glTF innerConeAngle, radians (light.spot_angle is the outer)
+};
+
 struct Scene {
   std::string name;
   std::vector<Mesh> meshes;
@@ -79,6 +88,7 @@ struct Scene {
   Bounds bounds;         // world-space AABB of all instanced vertices
   Camera camera;         // default view
   Light light;           // default light
+  std::vector<SceneLight> lights;  // lights placed by a glTF file (KHR_lights_punctual), in node order
   std::string source_file;  // empty for built-in scenes
 
   // Triangles drawn (instances x mesh triangles).

@@ -4,7 +4,7 @@ uniform mat4 u_light_view_proj;   // world -> light clip space
 uniform mat4 u_light_view;        // world -> light view space (looking down -Z)
 uniform float u_light_near;       // world units from the emitter plane / light position
 uniform float u_light_far;
-uniform int u_light_ortho;        // 1: directional (orthographic map), 0: spot (perspective)
+uniform int u_light_ortho;        // 1: directional (orthographic map), 0: spot or point (perspective)
 uniform float u_light_size_world; // emitter disk diameter, world units (Light::size)
 uniform float u_light_frustum_width; // ortho: frustum width in world units; spot: width of the
                                      // frustum at distance 1 (2 tan(fov/2))

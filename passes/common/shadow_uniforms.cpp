@@ -14,7 +14,7 @@ void set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
   p.set("u_light_far", s.far_plane);
   p.set("u_light_ortho", s.orthographic ? 1 : 0);
   p.set("u_light_size_world", frame.light.size);
-  float width = s.orthographic ? s.width_world : 2.0f * std::tan(frame.light.spot_angle);
+  float width = s.orthographic ? s.width_world : 2.0f * s.tan_half_fov;
   p.set("u_light_frustum_width", width);
   p.set("u_light_dir", frame.light.direction);
   p.set("u_light_pos", frame.light.position);

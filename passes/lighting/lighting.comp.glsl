@@ -11,6 +11,7 @@ uniform vec3 u_light_dir;     // unit, light -> scene
 uniform vec3 u_light_pos;
 uniform vec3 u_light_color;   // linear, times intensity
 uniform int u_light_spot;
+uniform int u_light_point;    // 1: light in every direction from u_light_pos, no cone
 uniform float u_spot_cos;     // cos(cone half-angle)
 uniform float u_ambient;
 
@@ -33,6 +34,8 @@ void main() {
   if (u_light_spot == 1) {
     l = normalize(u_light_pos - pos.xyz);
     cone = smoothstep(u_spot_cos, mix(u_spot_cos, 1.0, 0.2), dot(-l, u_light_dir));
+  } else if (u_light_point == 1) {
+    l = normalize(u_light_pos - pos.xyz);
   }
   float ndotl = max(dot(n, l), 0.0);
   vec3 radiance = albedo * (u_ambient + u_light_color * ndotl * visibility * cone);

@@ -27,6 +27,7 @@ class LightingPass final : public exec::PassImpl {
     prog.set("u_light_pos", f.light.position);
     prog.set("u_light_color", f.light.color * f.light.intensity);
     prog.set("u_light_spot", f.light.type == scene::LightType::spot ? 1 : 0);
+    prog.set("u_light_point", f.light.type == scene::LightType::point ? 1 : 0);
     prog.set("u_spot_cos", std::cos(f.light.spot_angle));
     prog.set("u_ambient", ctx.real("ambient"));
     gl::Texture& color = ctx.texture("color");

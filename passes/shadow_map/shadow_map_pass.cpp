@@ -22,6 +22,8 @@ class ShadowMapPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
                                         .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
     if (!p.valid()) return *p.last_error();
+    if (!ctx.frame().shadow.unsupported.empty())
+      return make_error("shadow_map: " + ctx.frame().shadow.unsupported, ErrorKind::bad_input);
     gl::Texture& depth = ctx.texture("depth");
     if (attached_ != depth.id()) {
       fb_ = gl::Framebuffer();

@@ -119,7 +119,7 @@ Status SandboxController::set_light_size(float diameter) {
 }
 
 void SandboxController::align_light_with_camera() {
-  if (light().type == scene::LightType::spot) {
+  if (light().type != scene::LightType::directional) {  // spot and point lights move to the camera
     light().position = camera().position;
     light().direction = camera().forward();
   } else {

@@ -144,8 +144,8 @@ void parse_body(ScriptStep& s, const json& v) {
       if (v.empty()) problem("light: give at least one of type, direction, position, size, spot_angle");
       if (v.contains("type")) {
         s.light.type = need_string(v["type"], "light.type");
-        if (*s.light.type != "directional" && *s.light.type != "spot")
-          problem("light.type must be \"directional\" or \"spot\", got \"" + *s.light.type + "\"");
+        if (*s.light.type != "directional" && *s.light.type != "spot" && *s.light.type != "point")
+          problem("light.type must be \"directional\", \"spot\" or \"point\", got \"" + *s.light.type + "\"");
       }
       if (v.contains("direction")) {
         s.light.direction = need_vec3(v["direction"], "light.direction");

@@ -35,7 +35,7 @@ struct CameraStep {
 };
 
 struct LightStep {
-  std::optional<std::string> type;  // "directional" | "spot"
+  std::optional<std::string> type;  // "directional" | "spot" | "point"
   std::optional<glm::vec3> direction, position;
   std::optional<float> size;          // emitter disk diameter, world units
   std::optional<float> spot_angle_deg;  // cone half-angle, degrees

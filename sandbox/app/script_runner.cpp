@@ -49,7 +49,9 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
                           step.camera.pitch_deg);
     case StepKind::light:
       if (step.light.type)
-        c.set_light_type(*step.light.type == "spot" ? scene::LightType::spot : scene::LightType::directional);
+        c.set_light_type(*step.light.type == "spot"    ? scene::LightType::spot
+                         : *step.light.type == "point" ? scene::LightType::point
+                                                       : scene::LightType::directional);
       if (step.light.position) c.light().position = *step.light.position;
       if (step.light.direction) c.set_light_direction(*step.light.direction);
       if (step.light.spot_angle_deg) c.light().spot_angle = glm::radians(*step.light.spot_angle_deg);

@@ -94,16 +94,18 @@ void scene_panel(SandboxController& c, UiState& ui) {
 void light_panel(SandboxController& c) {
   if (!ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) return;
   scene::Light& l = c.light();
-  int type = l.type == scene::LightType::spot ? 1 : 0;
-  if (ImGui::Combo("type", &type, "directional\0spot\0"))
-    c.set_light_type(type == 1 ? scene::LightType::spot : scene::LightType::directional);
+  int type = static_cast<int>(l.type);  // the combo lists LightType in declaration order
+  if (ImGui::Combo("type", &type, "directional\0spot\0point\0")) c.set_light_type(static_cast<scene::LightType>(type));
+  if (l.type == scene::LightType::point)
+    tooltip("light in every direction from its position; only esm renders it inside the scene bounds "
+            "(six shadow-map faces), one-map techniques need it outside them");
   glm::vec3 dir = l.direction;
   if (ImGui::DragFloat3("direction", &dir.x, 0.01f, -1.0f, 1.0f)) (void)c.set_light_direction(dir);
   ImGui::DragFloat3("position", &l.position.x, 0.05f);
-  tooltip("emitter disk centre, world units");
+  tooltip(l.type == scene::LightType::point ? "emitter sphere centre, world units" : "emitter disk centre, world units");
   float size = l.size;
   if (ImGui::DragFloat("size", &size, 0.005f, 0.0f, 100.0f, "%.3f")) (void)c.set_light_size(std::max(size, 0.0f));
-  tooltip("emitter disk DIAMETER, world units");
+  tooltip(l.type == scene::LightType::point ? "emitter sphere DIAMETER, world units" : "emitter disk DIAMETER, world units");
   if (l.type == scene::LightType::spot) {
     float deg = glm::degrees(l.spot_angle);
     if (ImGui::SliderFloat("spot angle", &deg, 1.0f, 89.0f, "%.0f deg")) l.spot_angle = glm::radians(deg);

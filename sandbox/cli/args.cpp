@@ -1,7 +1,10 @@
 #include "cli/args.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
 
 namespace penumbra::cli {
 
@@ -84,6 +87,17 @@ Result<int> parse_int(const std::string& option, const std::string& text, int lo
   if (ec != std::errc() || ptr != text.data() + text.size() || v < lo || v > hi)
     return make_error("--" + option + " expects an integer in [" + std::to_string(lo) + ", " +
                       std::to_string(hi) + "], got '" + text + "'");
+  return v;
+}
+
+Result<double> parse_real(const std::string& option, const std::string& text, double lo, double hi) {
+  char* end = nullptr;
+  const double v = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < lo || v > hi) {
+    std::ostringstream m;
+    m << "--" << option << " expects a number in [" << lo << ", " << hi << "], got '" << text << "'";
+    return make_error(m.str());
+  }
   return v;
 }
 

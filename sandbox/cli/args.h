@@ -37,5 +37,7 @@ int print_help(const std::string& usage, const std::string& description, const s
 // "640x480" -> {640, 480}; errors name the option and the expected form.
 Result<std::pair<int, int>> parse_size(const std::string& option, const std::string& text, int max = 16384);
 Result<int> parse_int(const std::string& option, const std::string& text, int lo, int hi);
+// A finite number in [lo, hi]; errors name the option and the range.
+Result<double> parse_real(const std::string& option, const std::string& text, double lo, double hi);
 
 }  // namespace penumbra::cli

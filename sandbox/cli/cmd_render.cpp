@@ -25,6 +25,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"all-techniques", false, false, "", "render every registered technique into --out-dir"},
     {"out-dir", true, false, "DIR", "directory for --all-techniques (default out)"},
     {"frames", true, false, "N", "frames to run before writing (progressive techniques; default 1)"},
+    {"light-size", true, false, "S", "override the scene light's size (emitter diameter, world units); 0 = hard"},
     context_option_spec(),
 };
 
@@ -76,7 +77,7 @@ Status write_outputs(plugin::TechniqueSession& session, const std::string& out, 
 int cmd_render(const std::vector<std::string>& argv) {
   if (help_requested(argv))
     return print_help("penumbra render --scene NAME|FILE [--technique T] [--set k=v]... "
-                                    "[--size WxH] [--shadow-size N] [--out OUT.png] [--mask MASK.png]",
+                                    "[--size WxH] [--shadow-size N] [--out OUT.png] [--mask MASK.png] [--light-size S]",
                                     "Renders one frame of a shadow technique headless and writes PNGs.",
                                     kSpecs);
   auto args = parse_args(argv, kSpecs);
@@ -118,6 +119,11 @@ int cmd_render(const std::vector<std::string>& argv) {
   }
   auto scene = load_scene_option(args->get("scene").value_or("showcase"));
   if (!scene) return fail(scene.error());
+  if (auto s = args->get("light-size")) {
+    auto size = parse_real("light-size", *s, 0.0, 1e6);
+    if (!size) return fail(size.error());
+    scene->light.size = static_cast<float>(*size);
+  }
 
   int code = 0;
   auto ctx = open_context(*args, "render", &code, 16, 16);

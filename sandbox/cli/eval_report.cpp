@@ -15,6 +15,7 @@ std::string eval_report_json(const EvalReport& report) {
                     {"mae", r.errors.mae},
                     {"max_error", r.errors.max_error},
                     {"ssim", r.errors.ssim},
+                    {"edge_error", r.errors.edge_error},
                     {"gpu_ms", r.gpu_ms}});
   nlohmann::ordered_json j = {{"scene", report.scene}, {"reference", report.reference}, {"rows", rows}};
   return j.dump(2) + "\n";
@@ -23,12 +24,13 @@ std::string eval_report_json(const EvalReport& report) {
 std::string eval_report_table(const EvalReport& report) {
   std::string out;
   char line[256];
-  std::snprintf(line, sizeof line, "%-14s %9s %13s %9s %9s %7s %10s\n", "technique", "RMSE", "RMSE penumbra",
-                "MAE", "max", "SSIM", "ms");
+  std::snprintf(line, sizeof line, "%-14s %9s %13s %9s %9s %7s %9s %10s\n", "technique", "RMSE", "RMSE penumbra",
+                "MAE", "max", "SSIM", "edge", "ms");
   out += line;
   for (const EvalRow& r : report.rows) {
-    std::snprintf(line, sizeof line, "%-14s %9.5f %13.5f %9.5f %9.4f %7.4f %10.3f\n", r.technique.c_str(),
-                  r.errors.rmse, r.errors.rmse_penumbra, r.errors.mae, r.errors.max_error, r.errors.ssim, r.gpu_ms);
+    std::snprintf(line, sizeof line, "%-14s %9.5f %13.5f %9.5f %9.4f %7.4f %9.5f %10.3f\n", r.technique.c_str(),
+                  r.errors.rmse, r.errors.rmse_penumbra, r.errors.mae, r.errors.max_error, r.errors.ssim,
+                  r.errors.edge_error, r.gpu_ms);
     out += line;
   }
   return out;

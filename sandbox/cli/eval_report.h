@@ -1,7 +1,7 @@
 #pragma once
 // The results of `penumbra eval` as a table and as the JSON of docs/evaluation.md:
 //   {"scene":..., "reference":..., "rows":[{"technique":..., "rmse":..., "rmse_penumbra":...,
-//    "mae":..., "max_error":..., "ssim":..., "gpu_ms":...}]}
+//    "mae":..., "max_error":..., "ssim":..., "edge_error":..., "gpu_ms":...}]}
 #include <string>
 #include <vector>
 

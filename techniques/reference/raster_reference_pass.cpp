@@ -31,6 +31,10 @@ class RasterReferencePass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     const exec::FrameInputs& frame = ctx.frame();
     if (!frame.scene) return make_error("reference_raster: no scene", ErrorKind::internal);
+    if (frame.light.type == scene::LightType::point)
+      return make_error("reference_raster: point lights need a map in every direction per sample point, which the "
+                        "raster reference does not render; use method=raytraced",
+                        ErrorKind::bad_input);
     const int samples = ctx.integer("samples"), map_size = ctx.integer("map_size");
     const int seed = ctx.integer("seed");
     const float slope_bias = ctx.real("slope_bias"), constant_bias = ctx.real("constant_bias");

@@ -1,7 +1,9 @@
 #pragma once
 // Exact area-light visibility on the CPU: for each receiver pixel, the fraction of M stratified
 // points on the light's emitter disk (scene::light_sample_points, shared with the GPU raster
-// reference) that a shadow ray reaches unoccluded. A point behind the receiver's tangent plane
+// reference) that a shadow ray reaches unoccluded. A point light's disk faces each receiver
+// (scene::point_light_sample). A light of size 0 is one point (or one parallel direction):
+// one ray per pixel sample, whatever M says, which is the exact HARD shadow. A point behind the receiver's tangent plane
 // (dot(normal, point - receiver) <= 0) counts as hidden by the receiver's own surface without a
 // ray: with interpolated normals this puts the terminator of a tessellated sphere where the
 // smooth surface has it (instead of a facet-dependent band where grazing rays graze the flat
@@ -14,6 +16,7 @@
 //       .progress = [](float f) { fmt::print("\r{:.0f}%", 100 * f); }});
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -48,7 +51,18 @@ struct TraceOptions {
   float normal_offset = 0.0f;
   // Called on the calling thread only, with the fraction of rows done (0..1], ending with 1.
   std::function<void(float)> progress;
+  // K x K sub-pixel samples per pixel (1: the pixel's own position). Each sample is where the
+  // camera ray through a stratum centre of the pixel meets the receiver's tangent plane (the
+  // pixel's position and normal), so the result is the visibility box-filtered over the pixel:
+  // the anti-aliased ground truth of a hard shadow's edge. Needs `camera`.
+  int pixel_samples = 1;
+  std::optional<scene::Camera> camera;
+  bool rows_bottom_up = false;  // positions are in GL row order (row 0 = bottom of the screen)
 };
+
+// Unit direction of the camera ray through the continuous screen point (x, y) in pixels,
+// y measured from the top of a width x height screen (pixel centres at +0.5).
+glm::vec3 camera_ray_direction(const scene::Camera& camera, int width, int height, float x, float y);
 
 // positions/normals have width * height entries; a pixel whose position is not finite (or
 // whose coverage is 0, when coverage is given) is background.

@@ -61,12 +61,12 @@ class RaytracedReferencePass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     const exec::FrameInputs& frame = ctx.frame();
     if (!frame.scene) return make_error("reference_raytraced: no scene", ErrorKind::internal);
-    const int rays = ctx.integer("rays"), seed = ctx.integer("seed");
+    const int rays = ctx.integer("rays"), seed = ctx.integer("seed"), pixel_samples = ctx.integer("pixel_samples");
     gl::Texture& mask = ctx.texture("mask");
-    ReferenceFrameKey key = make_frame_key(frame, {double(rays), double(seed)});
+    ReferenceFrameKey key = make_frame_key(frame, {double(rays), double(seed), double(pixel_samples)});
     if (!has_key_ || key != key_ || result_.size() != static_cast<size_t>(mask.width()) * mask.height()) {
       if (has_key_) count_reference_reset();
-      if (Status s = trace(ctx, rays, seed); !s) return s;
+      if (Status s = trace(ctx, rays, seed, pixel_samples); !s) return s;
       key_ = std::move(key);
       has_key_ = true;
     }
@@ -75,7 +75,7 @@ class RaytracedReferencePass final : public exec::PassImpl {
   }
 
  private:
-  Status trace(exec::PassContext& ctx, int rays, int seed) {
+  Status trace(exec::PassContext& ctx, int rays, int seed, int pixel_samples) {
     auto rs = ray_scene_for(*ctx.frame().scene);
     if (!rs) return rs.error();
     // G-buffer read-back; rows stay in GL order (bottom to top): the trace is per pixel, and the
@@ -95,10 +95,15 @@ class RaytracedReferencePass final : public exec::PassImpl {
       coverage[i] = pos[4 * i + 3] > 0.0f ? 1 : 0;
       receivers += coverage[i];
     }
-    const std::int64_t total = static_cast<std::int64_t>(receivers) * rays;
+    // A zero-size light is traced with one ray per sample point (trace_visibility).
+    if (ctx.frame().light.size <= 0.0f) rays = 1;
+    const std::int64_t total = static_cast<std::int64_t>(receivers) * rays * pixel_samples * pixel_samples;
     const auto t0 = std::chrono::steady_clock::now();
     int next_report = 1;  // in tenths
     TraceOptions options{.samples = rays, .seed = static_cast<uint32_t>(seed)};
+    options.pixel_samples = pixel_samples;
+    options.camera = ctx.frame().camera;
+    options.rows_bottom_up = true;  // GL row order, see above
     options.progress = [&](float f) {
       publish_reference_progress("raytraced", static_cast<std::int64_t>(f * static_cast<double>(total)), total);
       // Progress lines only for long traces (a full-HD frame at M = 256), every ~10%.
@@ -137,6 +142,7 @@ exec::PassType raytraced_reference_pass_type() {
       .same_size({"position", "normal", "mask"})
       .param(int_param("rays", 256, 1, 65536, "", "Shadow rays per pixel M (stratified light points)"))
       .param(int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the raster reference's)"))
+      .param(int_param("pixel_samples", 1, 1, 16, "", "K x K sub-pixel samples per pixel on the receiver's tangent plane"))
       .build<RaytracedReferencePass>();
 }
 

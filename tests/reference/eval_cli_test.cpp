@@ -58,7 +58,7 @@ TEST(EvalCli, WritesTheJsonSchemaAndHeatMaps) {
   EXPECT_EQ(j["reference"], "raytraced");
   ASSERT_EQ(j["rows"].size(), 2u);
   for (const auto& row : j["rows"]) {
-    for (const char* k : {"rmse", "rmse_penumbra", "mae", "max_error", "ssim", "gpu_ms"}) {
+    for (const char* k : {"rmse", "rmse_penumbra", "mae", "max_error", "ssim", "edge_error", "gpu_ms"}) {
       ASSERT_TRUE(row.contains(k)) << k;
       EXPECT_TRUE(row[k].is_number()) << k;
     }
@@ -70,6 +70,21 @@ TEST(EvalCli, WritesTheJsonSchemaAndHeatMaps) {
   EXPECT_GT(j["rows"][0]["rmse_penumbra"].get<double>(), j["rows"][1]["rmse_penumbra"].get<double>());
   EXPECT_TRUE(fs::exists(d / "heat" / "ball_hard_error.png"));
   EXPECT_TRUE(fs::exists(d / "heat" / "ball_reference_error.png"));
+}
+
+// --light-size 0 makes the reference the exact hard shadow (one ray per pixel): binary, so it has
+// no penumbra pixels, and a coarse hard shadow map differs from it along the edges.
+TEST(EvalCli, LightSizeZeroGivesTheExactHardReference) {
+  const fs::path d = out_dir();
+  const fs::path hard = d / "hard.json";
+  EvalRun r = run_eval("--scene ball --techniques hard --size 64x48 --frames 1 --light-size 0 --shadow-size 64 --json " +
+                       hard.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json h = nlohmann::json::parse(std::ifstream(hard));
+  const nlohmann::json& row = h["rows"][0];
+  EXPECT_GT(row["edge_error"].get<double>(), 0.0);  // a 64^2 map's staircase along the edges
+  EXPECT_EQ(row["rmse_penumbra"].get<double>(), 0.0);  // a hard reference has no penumbra pixels
+  EXPECT_EQ(run_eval("--scene ball --techniques hard --light-size -1").code, 2);
 }
 
 TEST(EvalCli, BadInputExitsTwoWithoutFiles) {

@@ -48,6 +48,13 @@ TEST(Script, ParsesEveryStepKind) {
   for (size_t i = 0; i < s.size(); ++i) EXPECT_EQ(s[i].index, static_cast<int>(i));
 }
 
+TEST(Script, LightTypesIncludePoint) {
+  auto steps = parse_script(R"([{"light": {"type": "point", "position": [0, 2, 0], "size": 0}}])", "s.json");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  EXPECT_EQ(*(*steps)[0].light.type, "point");
+  EXPECT_FLOAT_EQ((*steps)[0].light.position->y, 2.0f);
+}
+
 // Every bad step is reported with its index, the file, and what was expected.
 struct BadScript {
   const char* text;
@@ -75,7 +82,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{R"([{"wait": 1, "technique": "x"}])", "step 0: each step must be an object with exactly one key"},
         BadScript{R"([{"camera": {"position": [1, 2]}}])", "step 0: camera.position must be an array of 3 numbers"},
         BadScript{R"([{"camera": {"roll": 3}}])", "step 0: camera: unknown key 'roll'"},
-        BadScript{R"([{"light": {"type": "area"}}])", "step 0: light.type must be \"directional\" or \"spot\""},
+        BadScript{R"([{"light": {"type": "area"}}])", "step 0: light.type must be \"directional\", \"spot\" or \"point\""},
         BadScript{R"([{"light": {"size": -1}}])", "step 0: light.size must be >= 0"},
         BadScript{R"([{"set": {}}])", "step 0: set must be a non-empty object"},
         BadScript{R"([{"set": {"k": [1]}}])", "step 0: set: value of 'k' must be a boolean, number or string"},

@@ -47,3 +47,70 @@ TEST(ShadowFrustum, DirectionalCoversBoundsAndSpotIsPerspective) {
   EXPECT_GT(f.near_plane, 0.0f);
   EXPECT_LT(f.near_plane, f.far_plane);
 }
+
+// A point light outside the bounds gets one perspective frustum towards the bounds that contains
+// every corner; inside the bounds no single frustum can, and the frustum says so (the one-map
+// techniques turn that into an Error; esm renders six faces).
+TEST(ShadowFrustum, PointLightOutsideBoundsIsAFittedSpotInsideIsUnsupported) {
+  scene::Bounds b;
+  b.extend(glm::vec3(-5, 0, -5));
+  b.extend(glm::vec3(5, 2, 5));
+  scene::Light l;
+  l.type = scene::LightType::point;
+  l.direction = glm::vec3(1, 0, 0);  // not used by a point light's frustum
+  l.position = {3.0f, 9.0f, 4.0f};
+  scene::ShadowFrustum f = scene::shadow_frustum(l, b);
+  EXPECT_TRUE(f.unsupported.empty()) << f.unsupported;
+  EXPECT_FALSE(f.orthographic);
+  EXPECT_GT(f.tan_half_fov, 0.0f);
+  EXPECT_GT(f.near_plane, 0.0f);
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 c(i & 1 ? 5 : -5, i & 2 ? 2 : 0, i & 4 ? 5 : -5);
+    const glm::vec4 clip = f.view_proj * glm::vec4(c, 1.0f);
+    ASSERT_GT(clip.w, 0.0f) << "corner " << i;
+    for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(clip[k] / clip.w), 1.0f) << "corner " << i;
+  }
+  // It looks at the bounds' centre, whatever `direction` says.
+  const glm::vec4 centre = f.view_proj * glm::vec4(b.center(), 1.0f);
+  EXPECT_NEAR(centre.x / centre.w, 0.0f, 1e-4f);
+  EXPECT_NEAR(centre.y / centre.w, 0.0f, 1e-4f);
+
+  l.position = {0.0f, 1.0f, 0.0f};  // inside
+  f = scene::shadow_frustum(l, b);
+  EXPECT_NE(f.unsupported.find("inside the scene bounds"), std::string::npos) << f.unsupported;
+  l.position = {5.01f, 1.0f, 0.0f};  // just outside a face: would need ~90 degrees
+  f = scene::shadow_frustum(l, b);
+  EXPECT_FALSE(f.unsupported.empty());
+}
+
+TEST(ShadowFrustum, SpotFrustumReportsItsHalfAngle) {
+  scene::Bounds b;
+  b.extend(glm::vec3(-1.0f));
+  b.extend(glm::vec3(1.0f));
+  scene::Light l;
+  l.type = scene::LightType::spot;
+  l.position = {0, 6, 0};
+  l.spot_angle = glm::radians(30.0f);
+  const scene::ShadowFrustum f = scene::shadow_frustum(l, b);
+  EXPECT_NEAR(f.tan_half_fov, std::tan(glm::radians(30.0f)), 1e-5f);
+  EXPECT_TRUE(f.unsupported.empty());
+}
+
+// A point light's emitter is a sphere: every receiver sees the disk through the centre facing it.
+TEST(LightSamples, PointLightDiskFacesTheReceiver) {
+  scene::Light l;
+  l.type = scene::LightType::point;
+  l.position = {0, 3, 0};
+  l.size = 0.4f;
+  for (const glm::vec3 receiver : {glm::vec3(0, 0, 0), glm::vec3(4, 3, 1), glm::vec3(-1, 7, 2)}) {
+    const glm::vec3 facing = glm::normalize(l.position - receiver);
+    for (const glm::vec2& d : scene::unit_disk_samples(64, 3)) {
+      const glm::vec3 p = scene::point_light_sample(l, d, receiver);
+      EXPECT_NEAR(glm::dot(p - l.position, facing), 0.0f, 1e-5f);
+      EXPECT_NEAR(glm::length(p - l.position), 0.2f * glm::length(d), 1e-5f);
+    }
+  }
+  l.size = 0.0f;  // a zero-size point light is exactly its position
+  EXPECT_EQ(scene::point_light_sample(l, {0.5f, 0.5f}, {1, 1, 1}), l.position);
+  EXPECT_STREQ(scene::light_type_name(scene::LightType::point), "point");
+}

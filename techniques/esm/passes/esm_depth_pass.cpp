@@ -1,0 +1,86 @@
+// esm_depth: the extended shadow map's first pass (Bujnak, section 4: "rendering a depth map of
+// the scene from the light point of view proceeds as in conventional shadow maps"), face by face:
+// the casters' depth into the depth attachment with passes/shadow_map's program and biases
+// (slope-scaled + constant polygon offset, alpha-tested casters), so that with the quads disabled
+// the shadow test is plain shadow mapping; and the RGBA32F map cleared to each texel's "no edge"
+// values. The map depth lives in the depth attachment only (the paper's green channel): the
+// quads and the test read it there, and a depth-only raster pass costs no colour bandwidth.
+#include "exec/gpu_scene.h"
+#include "exec/pass_decl_builder.h"
+#include "gl/framebuffer.h"
+#include "techniques/esm/passes/esm_pass_common.h"
+#include "techniques/esm/passes/esm_pass_types.h"
+
+namespace penumbra::esm {
+namespace {
+
+using graph::Format;
+
+class DepthPass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    gl::ShaderProgram& p = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
+                                        .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
+    if (!p.valid()) return *p.last_error();
+    gl::Texture& depth = ctx.texture("depth");
+    gl::Texture& esm = ctx.texture("esm");
+    Result<EsmViews> views = frame_views(ctx, esm.width());
+    if (!views) return views.error();
+    if (attached_ != depth.id()) {
+      fb_ = gl::Framebuffer();
+      fb_.attach_depth(depth);
+      if (Status s = fb_.finish(); !s) return s;
+      attached_ = depth.id();
+    }
+    // A texel no quad reaches (esm_common.glsl): r and b neutral for MAX blending (0), or the
+    // paper's defaults for its two-pass fallback (lit-ness 0.75 -> r = 0.25, "maximal distance"
+    // b = 1), which the fallback's first quad pass overwrites; mask 0.
+    const bool two_pass = ctx.enumeration("overlap_resolve") == "two_pass";
+    const float no_edge[4] = {two_pass ? 0.25f : 0.0f, 0.0f, two_pass ? 1.0f : 0.0f, 0.0f};
+    glClearTexImage(esm.id(), 0, GL_RGBA, GL_FLOAT, no_edge);
+    fb_.bind();
+    glDisable(GL_SCISSOR_TEST);  // clears obey the scissor
+    const float far_depth = 1.0f;
+    glClearNamedFramebufferfv(fb_.id(), GL_DEPTH, 0, &far_depth);
+    if (!ctx.frame().scene) return {};
+    const gl::Program& prog = p.program();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(ctx.real("slope_bias"), ctx.real("constant_bias"));
+    glEnable(GL_SCISSOR_TEST);
+    for (const EsmFace& f : views->faces) {
+      glViewport(f.origin.x, f.origin.y, f.size, f.size);
+      glScissor(f.origin.x, f.origin.y, f.size, f.size);
+      prog.set("u_light_view_proj", f.view_proj);
+      ctx.frame().scene->draw(prog, 0, true);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_TEST);
+    return {};
+  }
+
+ private:
+  gl::Framebuffer fb_;
+  GLuint attached_ = 0;
+};
+
+}  // namespace
+
+exec::PassType depth_pass_type() {
+  return exec::PassDeclBuilder("esm_depth")
+      .describe("Extended shadow map, depth pass: depth (polygon offset) of every face; the map cleared to 'no edge' (raster)")
+      .imported("scene")
+      .imported("light")
+      .depth_out("depth")
+      .color_out("esm", {Format::RGBA32F})
+      .same_size({"depth", "esm"})
+      .real("slope_bias", 1.5, 0.0, 10.0, "", "glPolygonOffset factor")
+      .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "glPolygonOffset units")
+      .enumeration("overlap_resolve", "max_blend", {"max_blend", "two_pass"},
+                   "Defaults for one MAX-blended quad pass, or the paper's for its two-pass fallback")
+      .build<DepthPass>();
+}
+
+}  // namespace penumbra::esm

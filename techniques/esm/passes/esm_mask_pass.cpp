@@ -1,0 +1,73 @@
+// esm_mask: the shadow test of the extended shadow map (Bujnak, section 3.2) into the frame's
+// shadow_mask (compute; shaders/esm_mask.comp.glsl says how the lookup decides).
+#include <algorithm>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "exec/pass_decl_builder.h"
+#include "gl/texture.h"
+#include "passes/common/shadow_receiver_decl.h"
+#include "passes/common/shadow_uniforms.h"
+#include "techniques/esm/passes/esm_pass_common.h"
+#include "techniques/esm/passes/esm_pass_types.h"
+
+namespace penumbra::esm {
+namespace {
+
+using graph::Format;
+
+// Lit-ness of the shadow boundary: the edge, moved `shift` texels outwards (the paper: 0.707),
+// through the same transfer as the quads (esm_common.glsl).
+float boundary_litness(float shift) {
+  constexpr float kBandIn = 1.4142136f, kBandOut = 2.8284271f, kGuard = 0.25f;
+  const float t = (shift + kBandIn) / (kBandIn + kBandOut);
+  return std::clamp((t - kGuard) / (1.0f - kGuard), 0.0f, 1.0f);
+}
+
+class MaskPass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    gl::ShaderProgram& p = ctx.program({.compute = "techniques/esm/shaders/esm_mask.comp.glsl"});
+    if (!p.valid()) return *p.last_error();
+    gl::Texture& esm = ctx.texture("esm");
+    Result<EsmViews> views = frame_views(ctx, esm.width());
+    if (!views) return views.error();
+    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_normal", "normal");
+    ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
+    if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
+    ctx.bind_sampled(p, "u_esm", "esm", nearest_.id());  // texel fetches and one gather
+    ctx.bind_image(0, "mask", GL_WRITE_ONLY);
+    const gl::Program& prog = p.program();
+    passes::set_shadow_uniforms(prog, ctx.frame());  // faces_away_from_light()
+    set_view_uniforms(prog, *views);
+    prog.set("u_depth_bias", ctx.real("depth_bias"));
+    prog.set("u_boundary", boundary_litness(ctx.real("boundary_shift")));
+    prog.set("u_aa_width", ctx.real("aa_width"));
+    prog.set("u_inv_view_proj", glm::inverse(ctx.frame().projection() * ctx.frame().view()));
+    gl::Texture& mask = ctx.texture("mask");
+    prog.set("u_screen", glm::vec2(mask.width(), mask.height()));
+    ctx.dispatch_over(p, mask.width(), mask.height());
+    return {};
+  }
+
+ private:
+  gl::Sampler nearest_;
+};
+
+}  // namespace
+
+exec::PassType mask_pass_type() {
+  return passes::shadow_receiver_pass(
+             "esm_mask", "Extended shadow map test: point-filtered depth and edge depth, bilinear edge distance (compute)")
+      .sampled("esm", {Format::RGBA32F})
+      .image_out("mask", {Format::R16F})
+      .same_size({"position", "normal", "mask"})
+      .same_size({"shadow_map", "esm"})
+      .real("depth_bias", 0.0005, 0.0, 0.05, "window depth", "Subtracted from the receiver depth before each comparison")
+      .real("aa_width", 1.0, 0.0, 8.0, "pixels", "Width of the edge's ramp on screen (0 = binary)")
+      .real("boundary_shift", 0.0, 0.0, 2.0, "texels", "Shadow boundary moved outwards from the edge (paper: 0.707)")
+      .build<MaskPass>();
+}
+
+}  // namespace penumbra::esm

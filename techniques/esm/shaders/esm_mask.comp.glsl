@@ -1,0 +1,139 @@
+#version 450 core
+// The extended shadow map's shadow test (Bujnak, section 3.2), one receiver pixel per thread:
+// the map depth and the edge depth are compared point-filtered at the nearest texel, the edge
+// distance is interpolated bilinearly over the 2x2 texels around the receiver, and the result
+// is an anti-aliased hard shadow (1 = lit, 0 = umbra).
+//
+// The paper's lookup on (depth flag, edge flag, distance) is a table; with float targets and a
+// compute shader it becomes:
+//   a = the receiver is behind the occluder at the nearest texel (plain shadow mapping);
+//   b = the footprint's texels have silhouette quads and the receiver is behind all their edges
+//       (the paper reads only the nearest texel's edge depth; see below for the footprint);
+//   !b  -> a ? 0 : 1, exactly the plain shadow map;
+//   a, and the nearest texel is not inside its edge -> 0: it is covered by an occluder other
+//       than that edge's own surface (another object whose edge crosses, Figures 9-11), which no
+//       edge may lighten (no lit holes where silhouettes cross);
+//   otherwise -> the bilinear lit-ness decides, with a ramp one pixel wide on screen. A texel
+//       contributes its quad's lit-ness (0 when it lies outside its edge and is occluded in front
+//       of the receiver: the same rule per texel), or its plain depth test's 0 or 1 without one.
+// The paper shifts the boundary 0.707 texels outwards so that its 8-bit lookup could always
+// trust a; with the rule above the true edge is kept (boundary_shift = 0), the paper's shift is
+// a parameter.
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "../../../passes/common/shadow_common.glsl"
+#include "esm_common.glsl"
+#include "esm_views.glsl"
+layout(r16f, binding = 0) uniform writeonly image2D u_mask;
+uniform sampler2D u_position;
+uniform sampler2D u_normal;
+uniform sampler2D u_shadow_map;   // the depth pass's biased depth (nearest texel fetches)
+uniform sampler2D u_esm;          // RGBA32F extended map (texel fetches, a gather of the mask)
+uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
+uniform float u_boundary;         // lit-ness of the shadow boundary (edge_transfer at the edge + shift)
+uniform float u_aa_width;         // pixels; 0 = a binary edge
+uniform mat4 u_inv_view_proj;     // camera clip -> world
+uniform vec2 u_screen;            // pixels
+
+// Where the camera ray through pixel-space point `px` meets the plane (p, n).
+vec3 on_plane(vec2 px, vec3 p, vec3 n) {
+  vec2 ndc = px / u_screen * 2.0 - 1.0;
+  vec4 a = u_inv_view_proj * vec4(ndc, -1.0, 1.0), b = u_inv_view_proj * vec4(ndc, 1.0, 1.0);
+  vec3 o = a.xyz / a.w, d = b.xyz / b.w - o;
+  float denom = dot(d, n);
+  if (abs(denom) < 1e-12) return p;
+  return o + d * (dot(p - o, n) / denom);
+}
+
+// Window depth per texel of the receiver's surface, from how map coordinates and depth change
+// per pixel along x (cx) and y (cy); a surface seen edge-on gets a huge slope.
+float receiver_slope(vec3 cx, vec3 cy) {
+  float det = cx.x * cy.y - cx.y * cy.x;
+  if (abs(det) < 1e-12) return 1e9;
+  vec2 dz = vec2(cx.z * cy.y - cy.z * cx.y, cy.z * cx.x - cx.z * cy.x) / det;
+  return length(dz);
+}
+
+bool has_quad(vec4 texel) { return texel.a > 0.5; }
+
+// The receiver (depth z) is behind the texel's edge by more than `edge_bias`.
+bool behind_edge(vec4 texel, float z, float edge_bias) { return z > texel.b + edge_bias; }
+
+// Lit-ness of a texel for a receiver at depth z behind all the footprint's edges: a quad's, unless
+// the texel lies outside its edge and an occluder there is in front of the receiver (that
+// occluder is not the edge's own surface); without a quad, the plain test's 0 or 1.
+float litness(vec4 texel, float depth, float z) {
+  bool occluded = z > depth;
+  if (!has_quad(texel)) return occluded ? 0.0 : 1.0;
+  float l = 1.0 - texel.r;
+  return occluded && l >= edge_litness() ? 0.0 : l;
+}
+
+float visibility(ivec2 pixel, vec3 world, vec3 normal) {
+  int face = esm_face(world);
+  vec4 c = esm_map_coord(face, world);
+  if (c.w == 0.0 || c.z < 0.0 || c.z > 1.0) return 1.0;  // outside the map: lit
+  float z = c.z - u_depth_bias;
+  // The 2x2 texels around the receiver, clamped to its face's tile.
+  vec4 rect = u_face_rect[face];
+  vec2 st = c.xy - 0.5;
+  ivec2 i0 = clamp(ivec2(floor(st)), ivec2(rect.xy), ivec2(rect.xy + rect.z) - 2);
+  vec2 f = clamp(st - vec2(i0), 0.0, 1.0);
+  // Point filtering: the nearest of the four.
+  ivec2 nearest = i0 + ivec2(f.x >= 0.5 ? 1 : 0, f.y >= 0.5 ? 1 : 0);
+  bool a = z > texelFetch(u_shadow_map, nearest, 0).r;
+  // Away from silhouettes (most receivers) no texel of the footprint has a quad: one gather of
+  // the mask channel says so, and the answer is the plain test's.
+  vec4 masks = textureGather(u_esm, (vec2(i0) + 1.0) / vec2(textureSize(u_esm, 0)), 3);
+  if (all(lessThan(masks, vec4(0.5)))) return a ? 0.0 : 1.0;
+  vec4 t00 = texelFetch(u_esm, i0, 0), t10 = texelFetch(u_esm, i0 + ivec2(1, 0), 0);
+  vec4 t01 = texelFetch(u_esm, i0 + ivec2(0, 1), 0), t11 = texelFetch(u_esm, i0 + ivec2(1, 1), 0);
+  float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
+  float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
+  vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);
+  // The receiver's tangent plane in the map: where the neighbouring pixels' camera rays meet it
+  // (texels and window depth per pixel along x and y).
+  vec2 px = vec2(pixel) + 0.5;
+  vec3 cx = esm_map_coord(face, on_plane(px + vec2(1.0, 0.0), world, normal)).xyz - c.xyz;
+  vec3 cy = esm_map_coord(face, on_plane(px + vec2(0.0, 1.0), world, normal)).xyz - c.xyz;
+  // Behind an edge by more than the receiver's own surface changes depth over the quad band: a
+  // surface running into its own silhouette edge (an open sheet seen from its lit side, the lit
+  // facet next to a sharp edge) is not shadowed by that edge.
+  float edge_bias = receiver_slope(cx, cy) * (BAND_IN + 1.5);
+  // b: the footprint has quads and the receiver is behind every one of their edges. Where it is
+  // in front of one (overlapping quads keep the farthest edge depth, MAX), the edge distances
+  // say nothing reliable about it: plain shadow mapping (the paper: near overlaps the method
+  // "behaves almost like standard shadow mapping").
+  int quads = int(has_quad(t00)) + int(has_quad(t10)) + int(has_quad(t01)) + int(has_quad(t11));
+  int behind = int(has_quad(t00) && behind_edge(t00, z, edge_bias)) + int(has_quad(t10) && behind_edge(t10, z, edge_bias)) +
+               int(has_quad(t01) && behind_edge(t01, z, edge_bias)) + int(has_quad(t11) && behind_edge(t11, z, edge_bias));
+  bool b = quads > 0 && behind == quads;
+  if (!b) return a ? 0.0 : 1.0;
+  // Occluded at the nearest texel: only its own edge's inside may lighten it (sub-texel).
+  bool own_edge = has_quad(tn) && 1.0 - tn.r < edge_litness();
+  if (a && !own_edge) return 0.0;
+  // Bilinear lit-ness and its gradient (per texel).
+  float l00 = litness(t00, d00, z), l10 = litness(t10, d10, z), l01 = litness(t01, d01, z), l11 = litness(t11, d11, z);
+  // All four texels inside the boundary: so is the receiver. (Inside, the lit-ness is flat in the
+  // guard zone, so the ramp below, extrapolated from the local gradient, would call receivers
+  // deep in the shadow partly lit. Outside, it is linear over the whole band.)
+  if (all(lessThan(vec4(l00, l10, l01, l11), vec4(u_boundary)))) return 0.0;
+  float l = mix(mix(l00, l10, f.x), mix(l01, l11, f.x), f.y);
+  vec2 g = vec2(mix(l10 - l00, l11 - l01, f.y), mix(l01 - l00, l11 - l10, f.x));
+  if (u_aa_width <= 0.0) return l >= u_boundary ? 1.0 : 0.0;
+  // The ramp is u_aa_width pixels wide on screen: the edge's coverage of the pixel.
+  float per_pixel = length(vec2(dot(g, cx.xy), dot(g, cy.xy)));  // |d lit-ness / d pixel|
+  float distance_px = (l - u_boundary) / max(per_pixel, 1e-6);
+  return clamp(0.5 + distance_px / u_aa_width, 0.0, 1.0);
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
+  vec4 pos = texelFetch(u_position, p, 0);
+  float lit = 1.0;
+  if (pos.w > 0.0) {
+    vec3 n = texelFetch(u_normal, p, 0).xyz;
+    lit = faces_away_from_light(pos.xyz, n) ? 0.0 : visibility(p, pos.xyz, normalize(n));
+  }
+  imageStore(u_mask, p, vec4(lit));
+}

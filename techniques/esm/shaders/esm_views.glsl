@@ -1,0 +1,42 @@
+// The extended shadow map's views (passes/esm_views.h): one face for directional and spot
+// lights, six for a point light, each a square tile of the map. Set by set_esm_view_uniforms().
+uniform mat4 u_face_view_proj[6];  // world -> clip of each face
+uniform vec4 u_face_rect[6];       // tile origin (texels) xy, tile side (texels) z
+uniform int u_face_count;          // 1 or 6
+uniform vec4 u_esm_light;          // homogeneous light: (position, 1), or (-direction, 0)
+uniform int u_esm_ortho;           // 1: orthographic (directional)
+uniform float u_esm_near;          // world units
+uniform float u_esm_far;
+uniform float u_esm_texel_scale;   // world size of a texel: ortho this; perspective distance x this
+
+// The face a world position is shadowed through: the major axis of its direction from a point
+// light (+X -X +Y -Y +Z -Z), the only face otherwise (esm_face_of() on the CPU).
+int esm_face(vec3 world) {
+  if (u_face_count == 1) return 0;
+  vec3 d = world - u_esm_light.xyz;
+  vec3 a = abs(d);
+  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
+  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
+  return d.z >= 0.0 ? 4 : 5;
+}
+
+// (x, y) in texels of the whole map (texel centres at +0.5) and z the window depth [0, 1] of a
+// world position seen through face `face`; w = 1 inside the face's frustum, 0 outside.
+vec4 esm_map_coord(int face, vec3 world) {
+  vec4 clip = u_face_view_proj[face] * vec4(world, 1.0);
+  if (clip.w <= 0.0) return vec4(0.0);
+  vec3 ndc = clip.xyz / clip.w;
+  bool inside = all(lessThanEqual(abs(ndc), vec3(1.0)));
+  vec4 rect = u_face_rect[face];
+  return vec4(rect.xy + (ndc.xy * 0.5 + 0.5) * rect.z, ndc.z * 0.5 + 0.5, inside ? 1.0 : 0.0);
+}
+
+// World-unit distance from the light of a window depth (along the view axis).
+float esm_light_distance(float window_depth) {
+  if (u_esm_ortho == 1) return u_esm_near + window_depth * (u_esm_far - u_esm_near);
+  float z = window_depth * 2.0 - 1.0;
+  return 2.0 * u_esm_near * u_esm_far / (u_esm_far + u_esm_near - z * (u_esm_far - u_esm_near));
+}
+
+// World size of one texel at light distance d.
+float esm_texel_world(float d) { return u_esm_ortho == 1 ? u_esm_texel_scale : d * u_esm_texel_scale; }

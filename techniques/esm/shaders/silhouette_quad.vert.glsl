@@ -1,0 +1,76 @@
+#version 450 core
+// Silhouette quads (Bujnak, section 4.1, Figures 3 and 4), one face (tile) of the map at a time.
+//
+// Each vertex sits at one end of its edge and follows ONE of the edge's two facet planes: when
+// the light is in front of that plane it moves outwards across the silhouette, when behind it
+// moves inwards (Figure 4). A quad therefore has area exactly when the light separates its two
+// planes, i.e. when the edge is a silhouette; otherwise its vertices collapse onto a segment and
+// it rasterises nothing. The extrusion is laid out in the map's texel space, perpendicular to
+// the projected edge, so every texel within the band (esm_common.glsl) gets a fragment whatever
+// the projection; its length in clip space is the vertex's w times a constant (section 4.1:
+// "extrusion length is evaluated from vertex w multiplied with a constant"). The edge's
+// extrusion vector only says which side is outside: the bevel quads (Figure 5) keep it within
+// 45 degrees of the silhouette's outward direction, so its projection is never ambiguous.
+#include "esm_common.glsl"
+layout(location = 0) in vec3 a_position;     // this end of the edge (object space)
+layout(location = 1) in vec3 a_other_end;
+layout(location = 2) in vec4 a_plane;        // the facet plane this vertex follows
+layout(location = 3) in vec4 a_other_plane;
+layout(location = 4) in vec3 a_extrusion;    // unit, away from the mesh
+uniform mat4 u_model;          // object -> world
+uniform mat4 u_plane_matrix;   // inverse transpose of u_model: object planes -> world planes
+uniform mat4 u_view_proj;      // the face's world -> clip
+uniform vec4 u_light;          // homogeneous light: (position, 1), or (-direction, 0)
+uniform float u_tile_size;     // texels
+flat out vec2 v_end0;          // the edge's ends in tile texels (window coordinates)
+flat out vec2 v_end1;
+flat out vec2 v_depth;         // their window depths
+flat out vec2 v_outward;       // unit, texel space, across the edge away from the occluder
+flat out vec4 v_front_plane;   // world plane of the facet facing the light (or the bevel's)
+
+// Collapses the vertex (no area, nothing rasterised).
+void collapse() {
+  gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+  v_end0 = v_end1 = v_depth = v_outward = vec2(0.0);
+  v_front_plane = vec4(0.0);
+}
+
+void main() {
+  vec4 world0 = u_model * vec4(a_position, 1.0);
+  vec4 world1 = u_model * vec4(a_other_end, 1.0);
+  vec4 c0 = u_view_proj * world0, c1 = u_view_proj * world1;
+  // Clip the edge to the near plane (z >= -w): the same result at both ends' vertices.
+  float n0 = c0.z + c0.w, n1 = c1.z + c1.w;
+  if (n0 < 0.0 && n1 < 0.0) { collapse(); return; }
+  if (n0 < 0.0) c0 = mix(c0, c1, n0 / (n0 - n1));
+  if (n1 < 0.0) c1 = mix(c1, c0, n1 / (n1 - n0));
+  vec2 p0 = (c0.xy / c0.w * 0.5 + 0.5) * u_tile_size;
+  vec2 p1 = (c1.xy / c1.w * 0.5 + 0.5) * u_tile_size;
+  vec2 along = p1 - p0;
+  float len = length(along);
+  if (len < 1e-4) { collapse(); return; }  // seen end-on: the neighbouring edges cover it
+  along /= len;
+  // Outside: the side the extrusion vector points to, seen from the light. Its screen direction
+  // at c0 is d(ndc) ~ e.xy c0.w - c0.xy e.w (the derivative of the perspective divide).
+  vec4 e = u_view_proj * vec4(normalize(mat3(u_model) * a_extrusion), 0.0);
+  vec2 toward = e.xy * c0.w - c0.xy * e.w;
+  vec2 normal = vec2(-along.y, along.x);
+  vec2 outward = dot(toward, normal) >= 0.0 ? normal : -normal;
+  // Figure 4: in front of this vertex's plane -> outwards, behind -> inwards; half a texel of
+  // margin beyond the band (the fragment shader cuts the band exactly). Beyond its ends the quad
+  // reaches BAND_OUT further along the edge, for the outside of convex corners (see the
+  // fragment shader).
+  vec4 plane = u_plane_matrix * a_plane;
+  bool front = dot(plane, u_light) > 0.0;
+  vec2 offset = front ? outward * (BAND_OUT + 0.5) : -outward * (BAND_IN + 0.5);
+  offset -= along * (BAND_OUT + 0.5);  // this end is p0: extend away from p1
+  vec4 c = c0;
+  gl_Position = vec4((((p0 + offset) / u_tile_size) * 2.0 - 1.0) * c.w, c.z, c.w);
+  v_end0 = p0;
+  v_end1 = p1;
+  v_depth = vec2(c0.z / c0.w, c1.z / c1.w) * 0.5 + 0.5;
+  v_outward = outward;
+  // On a silhouette exactly one plane faces the light; the occluder lies behind it (a convex
+  // edge's facets and bevel are supporting planes).
+  v_front_plane = front ? plane : u_plane_matrix * a_other_plane;
+}

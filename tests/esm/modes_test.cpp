@@ -1,0 +1,112 @@
+// esm's switches: comparison mode (no quads = the ordinary shadow map, the paper's Figure 8),
+// the two-pass fallback (the same map as one MAX-blended pass), the debug views, and what the
+// binary / ramp settings do.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "esm_rig.h"
+#include "esm_scenes.h"
+#include "scene/builtin_scenes.h"
+
+using namespace penumbra;
+
+namespace {
+
+float max_difference(const metrics::MaskImage& a, const metrics::MaskImage& b) {
+  float m = 0.0f;
+  for (size_t i = 0; i < a.pixels.size(); ++i) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
+  return m;
+}
+
+size_t count_between(const metrics::MaskImage& m, float lo, float hi) {
+  return static_cast<size_t>(std::count_if(m.pixels.begin(), m.pixels.end(), [&](float v) { return v > lo && v < hi; }));
+}
+
+}  // namespace
+
+// Figure 8: "scene was rendered with the ESM, but with rendering of silhouette quads disabled".
+// With the quads off, esm is plain shadow mapping, pixel for pixel the `hard` technique with the
+// same biases (directional and spot lights).
+TEST(EsmModes, WithoutQuadsItIsThePlainShadowMapExactly) {
+  for (const bool spot : {false, true}) {
+    scene::Scene s = *scene::make_builtin_scene("poles");
+    if (spot) {
+      s.light.type = scene::LightType::spot;
+      s.light.spot_angle = glm::radians(45.0f);
+    }
+    test::TechniqueRig rig(192, 144, 256);
+    rig.set_scene(s);
+    rig.use("hard");
+    rig.render();
+    const metrics::MaskImage hard = rig.shadow_mask();
+    rig.use("esm");
+    rig.set({"silhouette_quads=false"});
+    rig.render();
+    const metrics::MaskImage plain = rig.shadow_mask();
+    EXPECT_EQ(max_difference(plain, hard), 0.0f) << (spot ? "spot" : "directional");
+    EXPECT_EQ(count_between(plain, 0.0f, 1.0f), 0u) << "binary, like any plain shadow map";
+    rig.set({"silhouette_quads=true"});
+    rig.render();
+    EXPECT_GT(count_between(rig.shadow_mask(), 0.02f, 0.98f), 20u) << "with quads the edges are anti-aliased";
+  }
+}
+
+// The paper's fallback for hardware without MAX blending with those factors: one pass that
+// overwrites, then a MAX pass. Both resolve overlaps to the same map.
+TEST(EsmModes, TwoPassFallbackGivesTheSameShadow) {
+  test::TechniqueRig rig(192, 144, 256);
+  rig.set_scene(test::crossed_pipes(0.12f, 0.3f));
+  rig.use("esm");
+  rig.render();
+  const metrics::MaskImage one = rig.shadow_mask();
+  const metrics::MaskImage one_mask = rig.read("esm_silhouette_mask");
+  rig.set({"overlap_resolve=two_pass"});
+  rig.render();
+  EXPECT_LT(max_difference(rig.shadow_mask(), one), 1e-3f);
+  EXPECT_EQ(max_difference(rig.read("esm_silhouette_mask"), one_mask), 0.0f);
+  bool has_overwrite_pass = false;
+  for (const auto& p : rig.session().plan().passes) has_overwrite_pass |= p.name == "silhouette_quads_overwrite";
+  EXPECT_TRUE(has_overwrite_pass);
+}
+
+// The debug views: the silhouette mask marks a band around every silhouette and nothing else;
+// the edge-distance channel stays within the quad band (texels).
+TEST(EsmModes, DebugViewsShowTheSilhouetteBandAndItsDistances) {
+  test::TechniqueRig rig(128, 96, 256);
+  rig.set_scene(*scene::make_builtin_scene("ball"));
+  rig.use("esm");
+  rig.render();
+  const metrics::MaskImage mask = rig.read("esm_silhouette_mask");
+  const metrics::MaskImage distance = rig.read("esm_edge_distance");
+  ASSERT_EQ(mask.width, 256);
+  size_t band = 0;
+  for (size_t i = 0; i < mask.pixels.size(); ++i) {
+    ASSERT_TRUE(mask.pixels[i] == 0.0f || mask.pixels[i] == 1.0f);
+    if (mask.pixels[i] == 0.0f) {
+      EXPECT_EQ(distance.pixels[i], 0.0f);
+      continue;
+    }
+    ++band;
+    EXPECT_GE(distance.pixels[i], -0.36f);  // the guard zone reads as its start
+    EXPECT_LE(distance.pixels[i], 2.83f);   // the band's outer end
+  }
+  // The ball's outline (~26 texels across) and the ground's four open edges: a band a few
+  // texels wide, far from the whole map.
+  EXPECT_GT(band, 200u);
+  EXPECT_LT(band, mask.pixels.size() / 8);
+  rig.set({"debug_outputs=false"});
+  rig.render();
+  for (const auto& p : rig.session().plan().passes) EXPECT_NE(p.name, "esm_debug");
+}
+
+// aa_width = 0 gives a binary mask (sub-texel edges, no ramp); the default ramp is one pixel.
+TEST(EsmModes, ZeroRampWidthIsBinary) {
+  test::TechniqueRig rig(192, 144, 256);
+  rig.set_scene(*scene::make_builtin_scene("ball"));
+  rig.use("esm");
+  rig.set({"aa_width=0"});
+  rig.render();
+  EXPECT_EQ(count_between(rig.shadow_mask(), 0.0f, 1.0f), 0u);
+}
