@@ -2,6 +2,7 @@
 
 #include "passes/shared_passes.h"
 #include "techniques/baseline/baseline_techniques.h"
+#include "techniques/mpg/mpg_technique.h"
 #include "techniques/pmchss/pmchss_technique.h"
 #include "techniques/reference/reference_technique.h"
 
@@ -10,6 +11,7 @@ namespace penumbra {
 void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   // Each technique folder adds one line here.
   baseline::register_techniques(registry);
+  mpg::register_technique(registry);
   pmchss::register_technique(registry);
   reference::register_techniques(registry);
 }
