@@ -91,7 +91,9 @@ float hard_shadow(vec3 c, out float blocker) {
   vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
   vec4 blocks = vec4(greaterThan(vec4(receiver), depths));
   blocker = dot(blocks, depths) / max(dot(blocks, vec4(1.0)), 1.0);
-  return dot(weights, blocks);
+  // Exactly 1 when all four shadow (the weights need not sum to 1 in floating point): the umbra
+  // early-out tests S >= 1.
+  return all(greaterThan(blocks, vec4(0.5))) ? 1.0 : dot(weights, blocks);
 #endif
 }
 
