@@ -98,8 +98,8 @@ TEST(MpgMultipass, DilationWidensTheOuterPenumbra) {
 // scene's, so the first pass is a full blur), compared with the same pass over every texel of the
 // kernel (kernel_sampling = dense). The RMS difference must shrink as taps double, each step at
 // most 10% above the previous (tolerance for the sampling pattern's luck at a given count), and
-// 64 taps must be within a third of 1 tap's. The difference does not reach 0: Poisson taps read
-// bilinearly between texels, the dense kernel reads texel centres.
+// 64 taps must be within a third of 1 tap's. The difference does not reach 0: 64 Poisson points
+// (read bilinearly) are not the 841 points of the dense 29 x 29 grid.
 TEST(MpgMultipass, MorePoissonTapsConvergeToTheDenseGaussian) {
   test::MpgRig rig(test::kWidth, test::kHeight, test::kShadowSize);
   rig.set_scene(test::make_scene("fence"));
