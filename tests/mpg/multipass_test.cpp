@@ -63,7 +63,9 @@ TEST(MpgMultipass, WithoutDilationLitPixelsStayExactlyOne) {
                 lit_changed, lightened, darkened);
     EXPECT_GT(lit, hard.pixels.size() / 2) << shadow_test;
     EXPECT_EQ(lit_changed, 0u) << shadow_test;
-    if (std::string(shadow_test) == "nearest") EXPECT_EQ(darkened, 0u);
+    if (std::string(shadow_test) == "nearest") {
+      EXPECT_EQ(darkened, 0u);
+    }
     EXPECT_GT(lightened, 200u) << shadow_test;
   }
 }
