@@ -130,9 +130,14 @@ TEST(MpgGraph, PassTypesAcceptEveryTechniqueValue) {
       ++bindings;
     }
     // Parameters in `enabled` and `repeat` change the graph's shape: they must be structural.
-    if (!pass.repeat_reference.empty()) EXPECT_TRUE(technique.find(pass.repeat_reference)->structural) << pass.name;
-    for (const graph::ParamDesc& d : g->parameters)
-      if (pass.enabled.find("$" + d.name) != std::string::npos) EXPECT_TRUE(d.structural) << pass.name << ": " << d.name;
+    if (!pass.repeat_reference.empty()) {
+      EXPECT_TRUE(technique.find(pass.repeat_reference)->structural) << pass.name;
+    }
+    for (const graph::ParamDesc& d : g->parameters) {
+      if (pass.enabled.find("$" + d.name) != std::string::npos) {
+        EXPECT_TRUE(d.structural) << pass.name << ": " << d.name;
+      }
+    }
   }
   EXPECT_GT(bindings, 40u);
 }
