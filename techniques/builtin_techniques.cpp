@@ -3,6 +3,7 @@
 #include "passes/shared_passes.h"
 #include "techniques/baseline/baseline_techniques.h"
 #include "techniques/esm/esm_technique.h"
+#include "techniques/mpg/mpg_technique.h"
 #include "techniques/pmchss/pmchss_technique.h"
 #include "techniques/reference/reference_technique.h"
 #include "techniques/sspcss/sspcss_technique.h"
@@ -13,6 +14,7 @@ void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   // Each technique folder adds one line here.
   baseline::register_techniques(registry);
   esm::register_technique(registry);
+  mpg::register_technique(registry);
   pmchss::register_technique(registry);
   reference::register_techniques(registry);
   sspcss::register_technique(registry);

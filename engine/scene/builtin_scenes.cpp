@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/mesh_builder.h"
+#include "scene/palm_tree.h"
 
 namespace penumbra::scene {
 namespace {
@@ -122,6 +123,36 @@ void add_colonnade(SceneBuilder& b, const Params& p, const glm::mat4& place) {
   b.add(std::move(hanging), b.material("hanging", {0.55f, 0.35f, 0.25f}), place);
 }
 
+// Three palms of different heights around a low wall, on a sand-coloured ground. The fronds are
+// alpha-masked (Cherry & Kooima's Pool scene): the shadow map, the G-buffer and the ray-traced
+// reference all see the gaps between the leaflets.
+void add_palms(SceneBuilder& b, const Params& p) {
+  Mesh trunks, fronds, wall;
+  trunks.name = "palm_trunks";
+  fronds.name = "palm_fronds";
+  wall.name = "wall";
+  const float h = p("palm_height"), length = p("frond_length");
+  const int count = std::max(3, static_cast<int>(p("frond_count")));
+  build::add_palm(trunks, fronds, {.base = {-1.6f, 0, -1.2f}, .height = h, .lean_degrees = 10, .lean_azimuth = 200,
+                                   .fronds = count, .frond_length = length, .crown_phase = 10});
+  build::add_palm(trunks, fronds, {.base = {1.2f, 0, -2.2f}, .height = 0.8f * h, .lean_degrees = 6, .lean_azimuth = 20,
+                                   .fronds = count, .frond_length = 0.9f * length, .crown_phase = 35});
+  build::add_palm(trunks, fronds, {.base = {0.6f, 0, 1.2f}, .height = 0.6f * h, .lean_degrees = 14, .lean_azimuth = 300,
+                                   .fronds = count, .frond_length = 0.8f * length, .crown_phase = 60});
+  build::add_box(wall, {0.0f, 0.25f, 2.6f}, {2.2f, 0.25f, 0.15f});  // a low wall to catch shadows off the ground
+  b.scene.images.push_back(palm_frond_image());
+  b.scene.materials.push_back(Material{.name = "palm_frond",
+                                       .base_color_factor = glm::vec4(1.0f),
+                                       .base_color_texture = static_cast<int>(b.scene.images.size() - 1),
+                                       .alpha_mode = AlphaMode::mask,
+                                       .alpha_cutoff = 0.5f,
+                                       .double_sided = true});
+  const uint32_t frond_material = static_cast<uint32_t>(b.scene.materials.size() - 1);
+  b.add(std::move(trunks), b.material("palm_trunk", {0.5f, 0.38f, 0.26f}), glm::mat4(1.0f));
+  b.add(std::move(fronds), frond_material, glm::mat4(1.0f));
+  b.add(std::move(wall), b.material("wall", {0.85f, 0.85f, 0.8f}), glm::mat4(1.0f));
+}
+
 const std::vector<ProceduralParam> kLightParams(float size, float elevation, float azimuth, float distance) {
   return {{"light_size", size, "emitter disk diameter, metres"},
           {"light_elevation", elevation, "light elevation above the horizon, degrees"},
@@ -149,6 +180,10 @@ const std::vector<ProceduralParam> kBallParams = {
     {"ball_height", 0.5f, "gap between the ground and the bottom of the ball, metres"},
     {"ball_radius", 0.5f, "ball radius, metres"}};
 const std::vector<ProceduralParam> kPoleParams = {{"pole_radius", 0.04f, "pole radius, metres"}};
+const std::vector<ProceduralParam> kPalmParams = {
+    {"palm_height", 3.5f, "trunk height of the tallest palm (the others are 0.8x and 0.6x), metres"},
+    {"frond_count", 9, "fronds per crown"},
+    {"frond_length", 1.8f, "frond length of the tallest palm, metres"}};
 const std::vector<ProceduralParam> kColonnadeParams = {
     {"column_count", 6, "columns per row"},
     {"column_height", 3.5f, "column height, metres"},
@@ -183,6 +218,13 @@ const std::vector<BuiltinScene>& registry() {
          add_colonnade(b, p, glm::mat4(1.0f));
          b.scene.camera = Camera::look_at({-9.0f, 4.0f, 7.0f}, {0.5f, 0.8f, -0.5f}, glm::radians(55.0f));
          b.scene.light = sky_light(p, {0, 0, 0});
+       }},
+      {"palms", join(kPalmParams, kLightParams(0.6f, 50.0f, 200.0f, 12.0f)),
+       [](SceneBuilder& b, const Params& p) {
+         b.add(ground_mesh(12, 12, {0, 0, -0.5f}), b.material("sand", {0.82f, 0.76f, 0.62f}), glm::mat4(1.0f));
+         add_palms(b, p);
+         b.scene.camera = Camera::look_at({3.5f, 5.5f, 7.5f}, {-0.2f, 0.6f, -0.6f});
+         b.scene.light = sky_light(p, {0, 0, -0.5f});
        }},
       {"showcase",
        join(join(join(join(kFenceParams, kBallParams), kPoleParams), kColonnadeParams),

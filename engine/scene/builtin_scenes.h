@@ -8,6 +8,8 @@
 //   poles      thin poles of several heights and tilts standing on / floating over the ground.
 //   colonnade  a Sponza-like court of columns and arches with poles hanging high above the floor
 //              (Sterna 2018's views).
+//   palms      palm trees whose fronds are alpha-masked quads (Cherry & Kooima's Pool scene) and a
+//              low wall; `palm_height`, `frond_count`, `frond_length`.
 //   showcase   (default) all of the above on one ground.
 //
 //   Result<Scene> s = make_builtin_scene("ball", {{"ball_height", 1.5f}});

@@ -26,7 +26,7 @@ namespace {
 constexpr float kHeatMapScale = 0.25f;
 
 const std::vector<OptionSpec> kSpecs = {
-    {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, showcase) or .gltf/.glb"},
+    {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
     {"techniques", true, false, "a,b,c", "techniques to evaluate (see 'penumbra techniques')"},
     {"reference", true, false, "raytraced|raster", "ground truth method (default raytraced)"},
     {"size", true, false, "WxH", "image size in pixels (default 640x360)"},

@@ -15,7 +15,7 @@ namespace penumbra::cli {
 namespace {
 
 const std::vector<OptionSpec> kSpecs = {
-    {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, showcase) or .gltf/.glb"},
+    {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
     {"technique", true, false, "T", "technique name (default pcss if registered, else the first); see 'penumbra techniques'"},
     {"set", true, true, "k=v", "set a technique parameter"},
     {"size", true, false, "WxH", "image size in pixels (default 640x360)"},

@@ -136,7 +136,7 @@ INSTANTIATE_TEST_SUITE_P(Docs, DocumentedExample,
                          ::testing::Values("pcss_blur", "penumbra_variants", "progressive_reference"));
 
 INSTANTIATE_TEST_SUITE_P(Shipped, TechniquePlan,
-                         ::testing::Values("hard", "pcf", "pcss", "pmchss", "reference", "sspcss", "template", "esm"));
+                         ::testing::Values("hard", "pcf", "pcss", "pmchss", "reference", "sspcss", "template", "esm", "mpg"));
 
 }  // namespace
 }  // namespace penumbra

@@ -1,0 +1,94 @@
+// Pass 2 of Cherry & Kooima (section 3): the distance map (S, D, view depth) from one shadow-map
+// comparison per pixel. The mapping from occluder distance to D is in distance_map.comp.glsl.
+#include <cmath>
+#include <optional>
+
+#include <glad/gl.h>
+
+#include "passes/common/shadow_receiver_decl.h"
+#include "passes/common/shadow_uniforms.h"
+#include "techniques/mpg/passes/mpg_pass_common.h"
+#include "techniques/mpg/passes/mpg_pass_types.h"
+
+namespace penumbra::mpg {
+namespace {
+
+using graph::Format;
+
+const char* alteration_define(const std::string& alteration) {
+  if (alteration == "pcf") return "0";
+  if (alteration == "gaussian") return "1";
+  return "2";  // multipass
+}
+
+class DistanceMapPass final : public exec::PassImpl {
+ public:
+  Status execute(exec::PassContext& ctx) override {
+    if (Status s = check_odd(ctx, "max_kernel"); !s) return s;
+    const std::string alteration = ctx.enumeration("alteration");
+    gl::ShaderProgram& p = ctx.program(
+        {.compute = std::string(kShaderDir) + "distance_map.comp.glsl",
+         .defines = {{"MAPPING", ctx.enumeration("mapping") == "physical" ? "1" : "0"},
+                     {"ALTERATION", alteration_define(alteration)},
+                     {"SHADOW_TEST", ctx.enumeration("shadow_test") == "nearest" ? "0" : "1"}}});
+    if (!p.valid()) return *p.last_error();
+    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_normal", "normal");
+    if (!nearest_) nearest_.emplace(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
+    ctx.bind_sampled(p, "u_shadow_map", "shadow_map", nearest_->id());
+    ctx.bind_image(0, "distance_map", GL_WRITE_ONLY);
+    ctx.bind_image(1, "kernel_shape", GL_WRITE_ONLY);
+    const gl::Program& prog = p.program();
+    const exec::FrameInputs& frame = ctx.frame();
+    passes::set_shadow_uniforms(prog, frame);
+    prog.set("u_depth_bias", ctx.real("depth_bias"));
+    prog.set("u_distance_power", ctx.real("distance_power"));
+    prog.set("u_distance_multiplier", ctx.real("distance_multiplier"));
+    prog.set("u_light_size_scale", ctx.real("light_size_scale"));
+    // Pixels per world unit at view depth 1 (the receiver's depth divides it in the shader).
+    prog.set("u_focal_px", static_cast<float>(frame.screen_h) / (2.0f * std::tan(0.5f * frame.camera.fov_y)));
+    prog.set("u_view_proj", frame.projection() * frame.view());
+    prog.set("u_anisotropic", ctx.boolean("anisotropic") ? 1 : 0);
+    const int max_kernel = ctx.integer("max_kernel"), max_passes = ctx.integer("max_passes");
+    prog.set("u_max_kernel", static_cast<float>(max_kernel));
+    prog.set("u_max_passes", max_passes);
+    if (alteration == "multipass") {
+      // The physical mapping inverts the blur passes' summed variance (multipass_kernel.h).
+      std::vector<float> variance = cumulative_pass_variance(kernel_sampling(ctx), ctx.integer("poisson_taps"),
+                                                             progressive_kernel(ctx), max_kernel, max_passes);
+      glProgramUniform1fv(prog.id(), prog.uniform_location("u_pass_variance"), static_cast<GLsizei>(variance.size()),
+                          variance.data());
+    }
+    gl::Texture& out = ctx.texture("distance_map");
+    ctx.dispatch_over(p, out.width(), out.height());
+    return {};
+  }
+
+ private:
+  std::optional<gl::Sampler> nearest_;  // raw depths (no comparison), made on first use
+};
+
+}  // namespace
+
+exec::PassType distance_map_pass_type() {
+  exec::PassDeclBuilder b = passes::shadow_receiver_pass(
+      "mpg_distance_map",
+      "mpg pass 2: hard shadow bit S and filter control D from the occluder distance (Cherry & Kooima 3.1)");
+  b.image_out("distance_map", {Format::RGBA16F})
+      .image_out("kernel_shape", {Format::RGBA16F})
+      .same_size({"position", "normal", "distance_map", "kernel_shape"})
+      .enumeration("shadow_test", "bilinear", {"bilinear", "nearest"}, "How S is tested")
+      .enumeration("mapping", "physical", {"physical", "paper"}, "Occluder distance to D")
+      .real("distance_power", 3.0, 0.1, 10.0, "", "Dp")
+      .real("distance_multiplier", 200.0, 0.0, 100000.0, "", "Dm")
+      .real("light_size_scale", 1.0, 0.0, 10.0, "", "Multiplier on the light's diameter (physical)")
+      .boolean("anisotropic", true, "Kernels shaped like the receiver's penumbra footprint")
+      .enumeration("alteration", "multipass", {"pcf", "gaussian", "multipass"}, "What D drives")
+      .integer("max_passes", 10, 1, kMaxPasses, "", "Multi-pass blur passes")
+      .real("depth_bias", 0.0005, 0.0, 0.05, "window depth", "Subtracted from the receiver depth");
+  add_max_kernel(b);
+  add_multipass_kernel(b);
+  return b.build<DistanceMapPass>();
+}
+
+}  // namespace penumbra::mpg

@@ -1,0 +1,61 @@
+#version 450 core
+// Pass 3, dilation of D (Cherry & Kooima, section 3.1: "apply a Gaussian filter over the
+// channel to expand the penumbra region"), one axis of a separable pass.
+//
+// A normalised Gaussian average would also halve D on the shadowed side of every edge (its lit
+// neighbours have D = 0) and shrink the inner penumbra; we use the Gaussian DILATION instead
+// (grey-scale morphology with a Gaussian structuring function, product form):
+//   D'(p) = max over q in the K x K kernel of D(q) * g(q - p),  g(0) = 1, sigma = K / 3 pixels
+// which never lowers D and spreads an edge's D outwards with a Gaussian fall-off. The product
+// g(x) g(y) makes it separable: AXIS 0 writes the row maximum to .a, AXIS 1 takes the column
+// maximum of .a. Only LIT pixels (S = 0) take the dilated value: that is the outer penumbra the
+// paper says this pass controls (section 5); shadowed pixels keep their own D, so a receiver's
+// own umbra (faces away from the light) and pixels the umbra early-out froze stay unfiltered.
+// Depth-aware (mpg_common.glsl): D does not spread to another surface. The two axes are those of
+// the round unit kernel mapped by the pixel's kernel shape A (kernel_shape.glsl), so D reaches
+// along the receiver's penumbra footprint; taps are the nearest texels (a bilinear D would mix
+// in the zeros of lit texels).
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "mpg_common.glsl"
+#include "shape_offset.glsl"
+
+layout(rgba16f, binding = 0) uniform writeonly image2D u_output;
+uniform sampler2D u_distance_map;  // texelFetch
+uniform sampler2D u_kernel_shape;  // (A11, A12, dz/dx, dz/dy), texelFetch
+uniform int u_radius;              // (K - 1) / 2 pixels
+uniform float u_kernel;            // K, pixels
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(u_output);
+  if (any(greaterThanEqual(p, size))) return;
+  vec4 centre = texelFetch(u_distance_map, p, 0);
+  vec4 shape = texelFetch(u_kernel_shape, p, 0);
+#if AXIS == 0
+  vec2 step = shape_offset(decode_shape(shape), vec2(1.0, 0.0));
+#else
+  vec2 step = shape_offset(decode_shape(shape), vec2(0.0, 1.0));
+#endif
+  float sigma = u_kernel / 3.0;
+  float dilated = 0.0;
+  for (int t = -u_radius; t <= u_radius; ++t) {
+    ivec2 q = ivec2(floor(vec2(p) + 0.5 + float(t) * step));
+    vec2 o = vec2(q - p);
+    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+    vec4 v = texelFetch(u_distance_map, q, 0);
+#if AXIS == 0
+    float d = v.g;
+#else
+    float d = v.a;
+#endif
+    float g = exp(-float(t * t) / (2.0 * sigma * sigma)) * tap_depth_weight(centre.b, shape.zw, o, v.b);
+    dilated = max(dilated, d * g);
+  }
+#if AXIS == 0
+  centre.a = dilated;
+#else
+  if (centre.r == 0.0 && centre.b > 0.0) centre.g = max(centre.g, dilated);
+  centre.a = 0.0;
+#endif
+  imageStore(u_output, p, centre);
+}

@@ -1,0 +1,143 @@
+#version 450 core
+// Pass 2 (Cherry & Kooima, sections 3.1-3.2): the distance map. Per pixel, the hard shadow S
+// (SHADOW_TEST: the paper's bit from the nearest texel, or the bilinear weight of the 2x2 texels;
+// hard_shadow() below) and the filter control D from the occluder distance d_r - d_b
+// (light-space distance of the receiver minus that of the blocking texels, world units,
+// light_distance()).
+//
+// MAPPING (a define, from the `mapping` parameter):
+//   0 paper:    D = (occluder distance / light depth range)^Dp * Dm (section 3.2). The paper's
+//               distance is in scene units, so its Dp/Dm fit one scene scale; dividing by the
+//               light frustum's depth range (far - near, world units) makes the distance a
+//               fraction in [0, 1] of the depth the shadow map spans: the same Dp/Dm mean the
+//               same thing for a 1 m toy and a 100 m court.
+//   1 physical: the penumbra width of PCSS (Fernando 2005; the paper's section 6 proposes it),
+//               w = (d_r - d_b) * light size / d_b (spot) or (d_r - d_b) * light size / D_sun
+//               (directional: the sun-like light of scene/light.h), world units across the
+//               light direction, times light_size_scale. A disk light of diameter w throws an
+//               edge ramp whose spread (standard deviation) is w / 4 (the 1-D marginal of a
+//               uniform disk). In pixels: spread_px = (w / 4) * g, g the pixels per world unit of
+//               the receiver's penumbra footprint (kernel_shape.glsl: the geometric mean of its
+//               two screen axes; with `anisotropic` off, focal_px / z for a receiver facing the
+//               camera at view depth z). D is the filter setting whose round kernel has that
+//               spread:
+//                 pcf       box of size s has sd s / sqrt(12):           D = sqrt(12) spread_px
+//                 gaussian  sigma = s / 3 truncated to +-s/2, sd 0.2477 s: D = spread_px / 0.2477
+//                 multipass the (fractional) number of passes whose summed variance (CPU,
+//                           multipass_kernel.cpp, u_pass_variance) reaches spread_px^2
+//
+// KERNEL SHAPE (second output, every receiver pixel; kernel_shape.glsl): the symmetric 2x2
+// matrix A (det 1) that maps the round kernel onto the receiver's penumbra footprint on screen
+// (identity when `anisotropic` is off) and the receiver plane's view-depth gradient per pixel,
+// written as (A11, A12, dz/dx, dz/dy); background (1, 0, 0, 0).
+//
+// Written per pixel (layout in mpg_common.glsl): background (0, 0, 0, 0); lit or outside the
+// shadow map (0, 0, z, 0); receiver facing away from the light (1, 0, z, 0): its own umbra,
+// never filtered (the reference counts such receivers as fully shadowed); shadowed (S, D, z, 0).
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "shadow_common.glsl"
+#include "mpg_common.glsl"
+#include "kernel_shape.glsl"
+
+layout(rgba16f, binding = 0) uniform writeonly image2D u_distance_map;
+layout(rgba16f, binding = 1) uniform writeonly image2D u_kernel_shape;
+uniform sampler2D u_position;      // world position, w = linear view depth (0 = background)
+uniform sampler2D u_normal;        // world normal
+uniform sampler2D u_shadow_map;    // light window depth, nearest, clamp to edge
+uniform float u_depth_bias;        // window depth
+uniform float u_distance_power;    // Dp
+uniform float u_distance_multiplier;  // Dm
+uniform float u_light_size_scale;  // multiplies the light's diameter (physical)
+uniform float u_focal_px;          // screen height / (2 tan(fov_y / 2)): pixels per world unit at depth 1
+uniform mat4 u_view_proj;          // camera, world -> clip
+uniform int u_anisotropic;         // 1: shaped kernels (kernel_shape.glsl), 0: round
+uniform float u_max_kernel;        // pixels
+uniform int u_max_passes;
+uniform float u_pass_variance[65]; // [n]: per-axis variance (pixels^2) after n full blur passes
+
+// World-unit penumbra width across the light direction (Fernando 2005, eq. 1, scene/light.h).
+float penumbra_width_world(float d_r, float d_b) {
+  float per_uv = u_light_ortho == 1 ? u_light_frustum_width : max(d_r, 1e-4) * u_light_frustum_width;
+  return penumbra_width_uv(d_r, d_b) * per_uv;
+}
+
+// Fractional number of multi-pass blurs whose summed variance is `variance` (pixels^2); a
+// fraction f of a pass blends the pass's result by f (multipass_blur.comp.glsl), adding f times
+// its variance, so the inverse is piecewise linear.
+float passes_for_variance(float variance) {
+  for (int n = 0; n < u_max_passes; ++n) {
+    float lo = u_pass_variance[n], hi = u_pass_variance[n + 1];
+    if (variance <= hi) return float(n) + (variance - lo) / max(hi - lo, 1e-6);
+  }
+  return float(u_max_passes);
+}
+
+// S and the blocker's window depth at shadow coordinate c (uv, window depth).
+// SHADOW_TEST 0 nearest: the paper's bit, one comparison with the nearest texel; the blocker is
+//   that texel. 1 bilinear: the four texels around c compared and weighted bilinearly (what a
+//   hardware comparison sampler returns), so S carries the edge's position inside the texel and
+//   the screen-space filters start from an edge that is not quantised to texels; the blocker is
+//   the mean depth of the texels that shadow.
+float hard_shadow(vec3 c, out float blocker) {
+  ivec2 size = textureSize(u_shadow_map, 0);
+  float receiver = c.z - u_depth_bias;
+#if SHADOW_TEST == 0
+  blocker = texelFetch(u_shadow_map, clamp(ivec2(c.xy * vec2(size)), ivec2(0), size - 1), 0).r;
+  return receiver > blocker ? 1.0 : 0.0;
+#else
+  vec2 t = c.xy * vec2(size) - 0.5;  // texel-centre coordinates
+  vec2 f = fract(t);
+  vec4 depths = textureGather(u_shadow_map, (floor(t) + 1.0) / vec2(size), 0);  // (0,1) (1,1) (1,0) (0,0)
+  vec4 weights = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+  vec4 blocks = vec4(greaterThan(vec4(receiver), depths));
+  blocker = dot(blocks, depths) / max(dot(blocks, vec4(1.0)), 1.0);
+  // Exactly 1 when all four shadow (the weights need not sum to 1 in floating point): the umbra
+  // early-out tests S >= 1.
+  return all(greaterThan(blocks, vec4(0.5))) ? 1.0 : dot(weights, blocks);
+#endif
+}
+
+float filter_control(float d_r, float d_b, float pixels_per_world) {
+  float occluder = max(d_r - d_b, 0.0);  // world units
+#if MAPPING == 0
+  float depth_range = max(u_light_far - u_light_near, 1e-6);
+  return pow(occluder / depth_range, u_distance_power) * u_distance_multiplier;
+#else
+  // Standard deviation of the edge ramp, pixels.
+  float spread = 0.25 * penumbra_width_world(d_r, d_b) * u_light_size_scale * pixels_per_world;
+#if ALTERATION == 0
+  return min(sqrt(12.0) * spread, u_max_kernel);
+#elif ALTERATION == 1
+  return min(spread / 0.2477, u_max_kernel);
+#else
+  return passes_for_variance(spread * spread);
+#endif
+#endif
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(u_distance_map)))) return;
+  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 value = vec4(0.0, 0.0, max(pos.w, 0.0), 0.0);
+  KernelShape shape;
+  shape.a = vec3(1.0, 0.0, 1.0);
+  shape.depth_gradient = vec2(0.0);
+  if (pos.w > 0.0) {
+    vec3 n = normalize(texelFetch(u_normal, p, 0).xyz);
+    shape = receiver_kernel_shape(u_view_proj, vec2(imageSize(u_distance_map)), pos.xyz, n, pos.w,
+                                  u_anisotropic == 1, u_focal_px);
+    vec3 c = shadow_coord(pos.xyz);
+    bool in_map = all(greaterThanEqual(c, vec3(0.0))) && all(lessThanEqual(c, vec3(1.0)));
+    if (faces_away_from_light(pos.xyz, n)) {
+      value.r = 1.0;
+    } else if (in_map) {
+      float blocker;
+      value.r = hard_shadow(c, blocker);
+      if (value.r > 0.0)
+        value.g = filter_control(light_distance(c.z), light_distance(blocker), shape.pixels_per_world);
+    }
+  }
+  imageStore(u_distance_map, p, value);
+  imageStore(u_kernel_shape, p, vec4(shape.a.xy, shape.depth_gradient));
+}
