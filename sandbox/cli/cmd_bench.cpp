@@ -11,16 +11,18 @@
 #include "cli/context_option.h"
 #include "cli/eval_capture.h"
 #include "cli/scene_option.h"
+#include "cli/technique_spec.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::cli {
 namespace {
 
 const std::vector<OptionSpec> kSpecs = {
-    {"techniques", true, false, "a,b", "techniques to time (default: every registered one but reference)"},
+    {"techniques", true, false, "a,b:k=v,...", "techniques to time, each with settings of its own "
+                                                "(mpg:alteration=pcf); default: every registered one but reference"},
     {"scenes", true, false, "s1,s2", "built-in scenes or glTF files (default colonnade)"},
-    {"size", true, false, "WxH", "screen size in pixels (default 1920x1080)"},
-    {"shadow-size", true, false, "N", "shadow-map size in texels (default 2048)"},
+    {"size", true, false, "WxH,...", "screen sizes in pixels (default 1920x1080); one row per size"},
+    {"shadow-size", true, false, "N,...", "shadow-map sizes in texels (default 2048); one row per size"},
     {"frames", true, false, "N", "measured frames per row (default 200, at most 240)"},
     {"warmup", true, false, "N", "frames rendered before measuring (default 10)"},
     {"set", true, true, "k=v", "set a parameter of every technique that has it"},
@@ -35,8 +37,11 @@ int fail(const Error& e) {
 }
 
 struct BenchOptions {
-  std::vector<std::string> techniques, scenes{"colonnade"}, sets;
-  int width = 1920, height = 1080, shadow = 2048, frames = 200, warmup = 10;
+  std::vector<TechniqueSpec> techniques;
+  std::vector<std::string> scenes{"colonnade"}, sets;
+  std::vector<std::pair<int, int>> sizes{{1920, 1080}};
+  std::vector<int> shadow_sizes{2048};
+  int frames = 200, warmup = 10;
   std::string json;
 };
 
@@ -44,34 +49,42 @@ Result<BenchOptions> parse_bench_options(const ParsedArgs& args, const plugin::T
   BenchOptions o;
   if (!args.positionals.empty()) return make_error("unexpected argument '" + args.positionals[0] + "'");
   if (auto t = args.get("techniques")) {
-    auto list = split_list("techniques", *t);
-    if (!list) return list.error();
-    o.techniques = *list;
+    auto specs = parse_technique_specs("techniques", *t, registry);
+    if (!specs) return specs.error();
+    o.techniques = *specs;
   } else {
     // The reference is ground truth, not a real-time technique: its per-frame cost depends on
     // how far its accumulation has got. Name it explicitly to time it anyway.
     for (const std::string& n : registry.names())
-      if (n != "reference") o.techniques.push_back(n);
+      if (n != "reference") o.techniques.push_back({n, {}, n});
   }
-  for (const std::string& t : o.techniques)
-    if (!registry.find(t)) {
-      std::string valid;
-      for (const std::string& n : registry.names()) valid += (valid.empty() ? "" : ", ") + n;
-      return make_error("unknown technique '" + t + "' (available: " + valid + ")");
-    }
   if (auto s = args.get("scenes")) {
     auto list = split_list("scenes", *s);
     if (!list) return list.error();
     o.scenes = *list;
   }
   if (auto s = args.get("size")) {
-    auto size = parse_size("size", *s);
-    if (!size) return size.error();
-    std::tie(o.width, o.height) = *size;
+    auto list = split_list("size", *s);
+    if (!list) return list.error();
+    o.sizes.clear();
+    for (const std::string& item : *list) {
+      auto size = parse_size("size", item);
+      if (!size) return size.error();
+      o.sizes.push_back(*size);
+    }
+  }
+  if (auto s = args.get("shadow-size")) {
+    auto list = split_list("shadow-size", *s);
+    if (!list) return list.error();
+    o.shadow_sizes.clear();
+    for (const std::string& item : *list) {
+      auto n = parse_int("shadow-size", item, 16, 16384);
+      if (!n) return n.error();
+      o.shadow_sizes.push_back(*n);
+    }
   }
   struct IntOption { const char* name; int* value; int lo, hi; };
-  for (const IntOption& i : {IntOption{"shadow-size", &o.shadow, 16, 16384}, IntOption{"frames", &o.frames, 1, 240},
-                             IntOption{"warmup", &o.warmup, 0, 100000}})
+  for (const IntOption& i : {IntOption{"frames", &o.frames, 1, 240}, IntOption{"warmup", &o.warmup, 0, 100000}})
     if (auto s = args.get(i.name)) {
       auto n = parse_int(i.name, *s, i.lo, i.hi);
       if (!n) return n.error();
@@ -79,7 +92,7 @@ Result<BenchOptions> parse_bench_options(const ParsedArgs& args, const plugin::T
     }
   o.json = args.get("json").value_or("");
   o.sets = args.all("set");
-  if (Status s = check_set_keys(registry, o.techniques, o.sets); !s) return s.error();
+  if (Status s = check_set_keys(registry, technique_names(o.techniques), o.sets); !s) return s.error();
   return o;
 }
 
@@ -91,7 +104,7 @@ Status write_json(const std::string& path, const BenchReport& report) {
 
 int cmd_bench(const std::vector<std::string>& argv) {
   if (help_requested(argv))
-    return print_help("penumbra bench [--techniques a,b] [--scenes s1,s2] [--size WxH] [--shadow-size N] "
+    return print_help("penumbra bench [--techniques a,b:k=v,...] [--scenes s1,s2] [--size WxH,...] [--shadow-size N,...] "
                                     "[--frames N] [--warmup N] [--set k=v]... [--json OUT.json]",
                                     "Renders warmup + N frames of each technique on each scene and prints the\n"
                                     "median time of every pass and their sum. On a GPU (EGL) passes are timed with\n"
@@ -116,21 +129,26 @@ int cmd_bench(const std::vector<std::string>& argv) {
   if (!ctx) return code;
   exec::PassLibrary library = make_pass_library(registry);
   BenchReport report{ctx->info().backend, ctx->info().renderer, "", {}};
+  const size_t rows = scenes.size() * o.sizes.size() * o.shadow_sizes.size() * o.techniques.size();
   for (const scene::Scene& scene : scenes) {
     plugin::TechniqueSession session(registry, library);
     session.set_scene(scene);
-    if (Status s = session.resize(o.width, o.height); !s) return fail(s.error());
-    if (Status s = session.set_shadow_size(o.shadow); !s) return fail(s.error());
-    for (const std::string& t : o.techniques) {
-      std::fprintf(stderr, "bench %s on %s (%dx%d, shadow %d): %d + %d frames...\n", t.c_str(), scene.name.c_str(),
-                   o.width, o.height, o.shadow, o.warmup, o.frames);
-      if (Status s = session.set_technique(t); !s) return fail(s.error());
-      if (Status s = apply_matching_sets(session, o.sets); !s) return fail(s.error());
-      if (Status s = render_timed_frames(session, o.warmup, o.frames); !s) return fail(s.error());
-      BenchRow row{t, scene.name, o.width, o.height, o.shadow, pass_medians(session, o.frames), 0.0};
-      for (const PassMedian& p : row.passes) row.total_ms += p.ms;
-      report.rows.push_back(std::move(row));
-      report.timing = timing_mode_note(session);
+    for (const auto& [width, height] : o.sizes) {
+      if (Status s = session.resize(width, height); !s) return fail(s.error());
+      for (int shadow : o.shadow_sizes) {
+        if (Status s = session.set_shadow_size(shadow); !s) return fail(s.error());
+        for (const TechniqueSpec& t : o.techniques) {
+          std::fprintf(stderr, "[%zu/%zu] bench %s on %s (%dx%d, shadow %d): %d + %d frames...\n",
+                       report.rows.size() + 1, rows, t.label.c_str(), scene.name.c_str(), width, height, shadow,
+                       o.warmup, o.frames);
+          if (Status s = select_technique(session, t, o.sets); !s) return fail(s.error());
+          if (Status s = render_timed_frames(session, o.warmup, o.frames); !s) return fail(s.error());
+          BenchRow row{t.label, scene.name, width, height, shadow, pass_medians(session, o.frames), 0.0};
+          for (const PassMedian& p : row.passes) row.total_ms += p.ms;
+          report.rows.push_back(std::move(row));
+          report.timing = timing_mode_note(session);
+        }
+      }
     }
   }
   std::printf("%s", bench_report_table(report).c_str());

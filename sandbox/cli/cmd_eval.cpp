@@ -14,6 +14,7 @@
 #include "cli/eval_capture.h"
 #include "cli/eval_report.h"
 #include "cli/scene_option.h"
+#include "cli/technique_spec.h"
 #include "metrics/heat_map.h"
 #include "plugin/frame_graph.h"
 #include "techniques/builtin_techniques.h"
@@ -27,7 +28,7 @@ constexpr float kHeatMapScale = 0.25f;
 
 const std::vector<OptionSpec> kSpecs = {
     {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
-    {"techniques", true, false, "a,b,c", "techniques to evaluate (see 'penumbra techniques')"},
+    {"techniques", true, false, "a,b:k=v,...", "techniques to evaluate, each with settings of its own (pmchss:variant=regular:k=2)"},
     {"reference", true, false, "raytraced|raster", "ground truth method (default raytraced)"},
     {"size", true, false, "WxH", "image size in pixels (default 640x360)"},
     {"shadow-size", true, false, "N", "techniques' shadow-map size in texels (default 2048)"},
@@ -52,7 +53,7 @@ int fail(const Error& e) {
 
 struct EvalOptions {
   std::string scene_name;
-  std::vector<std::string> techniques;
+  std::vector<TechniqueSpec> techniques;
   std::string reference = "raytraced";
   int width = 640, height = 360, shadow = 2048, rays = 256, samples = 1024, frames = 10;
   std::optional<float> light_size;  // --light-size: replaces the scene light's size
@@ -66,15 +67,9 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const plugin::Tec
   if (!args.get("scene")) return make_error("--scene NAME|FILE is required");
   o.scene_name = *args.get("scene");
   if (!args.get("techniques")) return make_error("--techniques a,b,c is required");
-  auto list = split_list("techniques", *args.get("techniques"));
-  if (!list) return list.error();
-  o.techniques = *list;
-  for (const std::string& t : o.techniques)
-    if (!registry.find(t)) {
-      std::string valid;
-      for (const std::string& n : registry.names()) valid += (valid.empty() ? "" : ", ") + n;
-      return make_error("unknown technique '" + t + "' (available: " + valid + ")");
-    }
+  auto specs = parse_technique_specs("techniques", *args.get("techniques"), registry);
+  if (!specs) return specs.error();
+  o.techniques = *specs;
   if (auto r = args.get("reference")) {
     if (*r != "raytraced" && *r != "raster")
       return make_error("--reference expects raytraced or raster, got '" + *r + "'");
@@ -101,7 +96,7 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const plugin::Tec
   o.json = args.get("json").value_or("");
   o.heatmaps = args.get("heatmaps").value_or("");
   o.sets = args.all("set");
-  std::vector<std::string> with_reference = o.techniques;
+  std::vector<std::string> with_reference = technique_names(o.techniques);
   with_reference.push_back("reference");
   if (Status s = check_set_keys(registry, with_reference, o.sets); !s) return s.error();
   return o;
@@ -132,12 +127,11 @@ Status render_reference(plugin::TechniqueSession& session, const EvalOptions& o)
 }
 
 // Renders one technique (a listed `reference` runs to completion first) and compares its mask.
-Result<EvalRow> evaluate(plugin::TechniqueSession& session, const std::string& technique, const EvalOptions& o,
+Result<EvalRow> evaluate(plugin::TechniqueSession& session, const TechniqueSpec& spec, const EvalOptions& o,
                          const metrics::MaskImage& reference, const metrics::CoverageMask& coverage,
                          metrics::MaskImage& mask_out) {
-  if (Status s = session.set_technique(technique); !s) return s.error();
-  if (Status s = apply_matching_sets(session, o.sets); !s) return s.error();
-  if (technique == "reference") {  // a reference evaluated as a technique runs to completion first
+  if (Status s = select_technique(session, spec, o.sets); !s) return s.error();
+  if (spec.name == "reference") {  // a reference evaluated as a technique runs to completion first
     const auto t0 = std::chrono::steady_clock::now();
     for (int f = 0; f < 1 + 65536; ++f) {
       if (Status s = session.render(); !s) return s.error();
@@ -148,11 +142,11 @@ Result<EvalRow> evaluate(plugin::TechniqueSession& session, const std::string& t
   }
   if (Status s = render_timed_frames(session, kWarmupFrames, o.frames); !s) return s.error();
   gl::Texture* mask = session.executor().resource(plugin::kShadowMask);
-  if (!mask) return make_error("technique '" + technique + "' wrote no shadow_mask", ErrorKind::internal);
+  if (!mask) return make_error("technique '" + spec.label + "' wrote no shadow_mask", ErrorKind::internal);
   mask_out = read_mask_image(*mask);
   auto errors = metrics::compare_masks(mask_out, reference, coverage);
   if (!errors) return errors.error();
-  EvalRow row{technique, *errors, 0.0};
+  EvalRow row{spec.label, *errors, 0.0};
   // The technique's own passes: everything but the frame's G-buffer prologue and lighting epilogue.
   for (const PassMedian& p : pass_medians(session, o.frames))
     if (p.name != "gbuffer" && p.name != "lighting") row.gpu_ms += p.ms;
@@ -231,8 +225,8 @@ int cmd_eval(const std::vector<std::string>& argv) {
 
   EvalReport report{scene->name, o.reference, {}};
   std::vector<metrics::MaskImage> masks;
-  for (const std::string& t : o.techniques) {
-    std::fprintf(stderr, "technique %s...\n", t.c_str());
+  for (const TechniqueSpec& t : o.techniques) {
+    std::fprintf(stderr, "technique %s...\n", t.label.c_str());
     metrics::MaskImage mask;
     auto row = evaluate(session, t, o, reference, coverage, mask);
     if (!row) return fail(row.error());

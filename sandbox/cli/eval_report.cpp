@@ -1,5 +1,7 @@
 #include "cli/eval_report.h"
 
+#include <algorithm>
+
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -23,12 +25,15 @@ std::string eval_report_json(const EvalReport& report) {
 
 std::string eval_report_table(const EvalReport& report) {
   std::string out;
-  char line[256];
-  std::snprintf(line, sizeof line, "%-14s %9s %13s %9s %9s %7s %9s %10s\n", "technique", "RMSE", "RMSE penumbra",
+  char line[512];
+  // Rows are labelled by technique and settings ("pmchss:variant=regular"): as wide as the longest.
+  int width = 14;
+  for (const EvalRow& r : report.rows) width = std::max(width, static_cast<int>(std::min<size_t>(r.technique.size(), 200)));
+  std::snprintf(line, sizeof line, "%-*s %9s %13s %9s %9s %7s %9s %10s\n", width, "technique", "RMSE", "RMSE penumbra",
                 "MAE", "max", "SSIM", "edge", "ms");
   out += line;
   for (const EvalRow& r : report.rows) {
-    std::snprintf(line, sizeof line, "%-14s %9.5f %13.5f %9.5f %9.4f %7.4f %9.5f %10.3f\n", r.technique.c_str(),
+    std::snprintf(line, sizeof line, "%-*s %9.5f %13.5f %9.5f %9.4f %7.4f %9.5f %10.3f\n", width, r.technique.c_str(),
                   r.errors.rmse, r.errors.rmse_penumbra, r.errors.mae, r.errors.max_error, r.errors.ssim,
                   r.errors.edge_error, r.gpu_ms);
     out += line;

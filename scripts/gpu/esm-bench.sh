@@ -7,8 +7,8 @@
 #   env: SIZE=1920x1080 FRAMES=200 CONTEXT=egl ESM_SIZES="512 1024 2048" HARD_SIZES="512 2048 4096"
 #        PIXEL_SAMPLES=4 (the reference's K x K samples per pixel) SCENES="colonnade MODEL" (default)
 #
-# Per scene and shadow-map size: one `penumbra bench` run (median of FRAMES frames, GPU
-# timestamps) for the cost, and one `penumbra eval` run (--light-size 0: the exact hard shadow,
+# Per scene: one `penumbra bench` run over every shadow-map size (median of FRAMES frames, GPU
+# timestamps) for the cost; per scene and size one `penumbra eval` run (--light-size 0: the exact hard shadow,
 # ray-traced on the CPU with PIXEL_SAMPLES^2 rays per pixel, i.e. box-filtered edges) for the
 # edge error. esm runs with debug_outputs=false (its debug views are not part of the method).
 # Then esm_table.py writes OUT_DIR/esm.md. On llvmpipe, to check that it works (the numbers say
@@ -38,6 +38,15 @@ for scene in "${scenes[@]}"; do
   name="${name%.*}"
   # Every size either technique runs at: one eval each (the reference is traced once per run).
   all_sizes="$(printf '%s\n' $esm_sizes $hard_sizes | sort -n -u | tr '\n' ' ')"
+  # The cost: one bench process for both techniques at every size (a few rows more than the
+  # tables use), then a JSON per technique and size for esm_table.py.
+  echo "== bench esm, hard on $name, $size, shadow $all_sizes" >&2
+  "$bin" bench --context "$context" --techniques esm:debug_outputs=false,hard --scenes "$scene" --size "$size" \
+    --shadow-size "$(echo $all_sizes | tr ' ' ',')" --frames "$frames" --json "$out/bench_${name}.json" > "$out/bench_${name}.txt"
+  names=()
+  for n in $esm_sizes; do names+=("bench_${name}_esm_${n}=esm:debug_outputs=false@shadow=$n"); done
+  for n in $hard_sizes; do names+=("bench_${name}_hard_${n}=hard@shadow=$n"); done
+  python3 "$here/split_bench.py" "$out/bench_${name}.json" "$out" "${names[@]}"
   for n in $all_sizes; do
     techniques=()
     [[ " $esm_sizes " == *" $n "* ]] && techniques+=(esm)
@@ -45,13 +54,6 @@ for scene in "${scenes[@]}"; do
     list="$(IFS=,; echo "${techniques[*]}")"
     debug=()
     [[ " $esm_sizes " == *" $n "* ]] && debug=(--set debug_outputs=false)  # only esm has the key
-    for t in "${techniques[@]}"; do
-      echo "== bench $t on $name, $size, shadow $n" >&2
-      sets=()
-      [ "$t" = esm ] && sets=(--set debug_outputs=false)
-      "$bin" bench --context "$context" --techniques "$t" --scenes "$scene" --size "$size" --shadow-size "$n" \
-        --frames "$frames" "${sets[@]}" --json "$out/bench_${name}_${t}_${n}.json" > /dev/null
-    done
     echo "== eval $list on $name, $size, shadow $n (exact hard reference, ${pixel_samples}x${pixel_samples} rays a pixel)" >&2
     "$bin" eval --context "$context" --scene "$scene" --techniques "$list" --size "$size" --shadow-size "$n" \
       --frames 3 --light-size 0 --set "pixel_samples=$pixel_samples" "${debug[@]}" \

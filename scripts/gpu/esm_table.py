@@ -19,7 +19,7 @@ FRAME_PASSES = {"gbuffer", "lighting"}  # the frame's prologue and epilogue, sha
 def load_bench(d, scene, technique, size):
     path = Path(d) / f"bench_{scene}_{technique}_{size}.json"
     data = json.loads(path.read_text())
-    rows = [r for r in data["rows"] if r["technique"] == technique]
+    rows = [r for r in data["rows"] if r["technique"].split(":")[0] == technique]
     if len(rows) != 1:
         sys.exit(f"{path}: expected one {technique} row, found {len(rows)}")
     passes = [(p["name"], p["ms"]) for p in rows[0]["passes"] if p["name"] not in FRAME_PASSES]
@@ -30,7 +30,7 @@ def load_eval(d, scene, technique, size):
     path = Path(d) / f"eval_{scene}_{size}.json"
     data = json.loads(path.read_text())
     for r in data["rows"]:
-        if r["technique"] == technique:
+        if r["technique"].split(":")[0] == technique:
             return r
     sys.exit(f"{path}: no {technique} row")
 

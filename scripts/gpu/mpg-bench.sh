@@ -52,19 +52,25 @@ configs=(
 )
 
 "$bin" info --context "$context" > "$out/info.txt" 2>&1 || true
+# One bench process per size for every configuration (--techniques items with their own
+# settings), then one JSON per configuration for mpg_tables.py.
+specs=()
+names=()
+for entry in "${configs[@]}"; do
+  name="${entry%%|*}"
+  label="mpg:$(echo "${entry#*|} debug_outputs=false" | tr ' ' ':')"
+  specs+=("$label")
+  names+=("$name=$label")
+done
 for pair in $sizes; do
   size="${pair%%:*}"
   shadow="${pair#*:}"
   dir="$out/${size}_s${shadow}"
   mkdir -p "$dir"
-  for entry in "${configs[@]}"; do
-    name="${entry%%|*}"
-    sets=()
-    for kv in ${entry#*|} debug_outputs=false; do sets+=(--set "$kv"); done
-    echo "== $size shadow $shadow: $name (${entry#*|})" >&2
-    "$bin" bench --context "$context" --techniques mpg --scenes "$scenes" --size "$size" --shadow-size "$shadow" \
-      --frames "$frames" --warmup "$warmup" "${sets[@]}" --json "$dir/$name.json" > "$dir/$name.txt" 2>&1 ||
-      { echo "bench failed for $name, see $dir/$name.txt" >&2; exit 1; }
-  done
+  echo "== $size shadow $shadow: ${#configs[@]} configurations" >&2
+  "$bin" bench --context "$context" --techniques "$(IFS=,; echo "${specs[*]}")" --scenes "$scenes" --size "$size" \
+    --shadow-size "$shadow" --frames "$frames" --warmup "$warmup" --json "$dir/bench.json" > "$dir/bench.txt" 2>&1 ||
+    { echo "bench failed, see $dir/bench.txt" >&2; tail -5 "$dir/bench.txt" >&2; exit 1; }
+  python3 "$here/split_bench.py" "$dir/bench.json" "$dir" "${names[@]}"
 done
 python3 "$here/mpg_tables.py" "$out" | tee "$out/mpg.md"

@@ -66,7 +66,7 @@ def load(directory):
         data = json.loads(path.read_text())
         per_scene = {}
         for row in data["rows"]:
-            if row["technique"] != "mpg":
+            if row["technique"].split(":")[0] != "mpg":
                 continue
             groups = {g: 0.0 for g in GROUPS}
             for p in row["passes"]:

@@ -11,7 +11,7 @@
 #   3. separable vs Poisson filters at fixed 8, 16 and 32-pixel radii (fixed_radius_px, round
 #      kernels: receiver_footprint=false), 1080p, 2048^2 (targets: separable <= 0.3x Poisson at
 #      32 px; separable at 32 px <= 1.2x at 8 px). Poisson at its default 32 taps and at 64.
-# Every bench run uses the techniques' defaults otherwise. One run per configuration, both
+# Every bench run uses the techniques' defaults otherwise. One bench process per part, both
 # scenes in it.
 #
 #   scripts/gpu/sspcss-bench.sh PENUMBRA_BINARY OUTDIR
@@ -21,7 +21,7 @@
 #
 # On the GPU machine (docs/gpu-machine.md): bundle here with
 #   scripts/gpu/bundle.sh .gpu build/release/sandbox/penumbra
-# then, in a device run carrying .gpu (21 bench runs; a few minutes of device time at FRAMES=200):
+# then, in a device run carrying .gpu (3 bench processes; a few minutes of device time at FRAMES=200):
 #   source .gpu/env.sh && scripts/gpu/sspcss-bench.sh .gpu/bin/penumbra $OUT/sspcss
 # Writes OUTDIR/*.json (one per bench run), OUTDIR/info.txt and OUTDIR/sspcss-bench.md.
 # A quick proof that it works on llvmpipe (numbers meaningless):
@@ -44,29 +44,41 @@ mkdir -p "$out"
 
 "$bin" info --context "$context" > "$out/info.txt"
 
-# bench NAME SIZE SHADOW TECHNIQUES [k=v]...
+# bench NAME --techniques ... --size ... --shadow-size ...: one process for a whole part (its
+# configurations are --techniques items with their own settings, its sizes lists), then one JSON
+# per configuration for sspcss_tables.py (split_bench.py).
 bench() {
-  local name=$1 sz=$2 sh=$3 techniques=$4
-  shift 4
-  local sets=()
-  for kv in "$@"; do sets+=(--set "$kv"); done
-  echo "== $name: $techniques, $sz, shadow $sh ${*:-}" >&2
-  "$bin" bench --context "$context" --techniques "$techniques" --scenes "$scenes" --size "$sz" \
-    --shadow-size "$sh" --frames "$frames" --warmup "$warmup" ${sets[@]+"${sets[@]}"} \
-    --json "$out/$name.json" > "$out/$name.txt"
+  local name=$1
+  shift
+  echo "== $name: $*" >&2
+  "$bin" bench --context "$context" --scenes "$scenes" --frames "$frames" --warmup "$warmup" "$@" \
+    --json "$out/$name.json" > "$out/$name.txt" 2>&1 || { tail -5 "$out/$name.txt" >&2; exit 1; }
 }
+list() { echo "$*" | tr ' ' ','; }
 
-for n in $shadow_sizes; do
-  bench "shadow_$n" "$size" "$n" sspcss,pcss
-  bench "shadow_${n}_centre" "$size" "$n" sspcss subpixel_hard_shadow=false
-done
-for s in $screen_sizes; do bench "screen_$s" "$s" "$shadow" sspcss,pcss; done
+centre="sspcss:subpixel_hard_shadow=false"
+bench part_shadow --techniques "sspcss,pcss,$centre" --size "$size" --shadow-size "$(list $shadow_sizes)"
+names=()
+for n in $shadow_sizes; do names+=("shadow_$n=sspcss+pcss@shadow=$n" "shadow_${n}_centre=$centre@shadow=$n"); done
+python3 "$here/split_bench.py" "$out/part_shadow.json" "$out" "${names[@]}"
+
+bench part_screen --techniques sspcss,pcss --size "$(list $screen_sizes)" --shadow-size "$shadow"
+names=()
+for s in $screen_sizes; do names+=("screen_$s=sspcss+pcss@size=$s"); done
+python3 "$here/split_bench.py" "$out/part_screen.json" "$out" "${names[@]}"
+
+specs=()
+names=()
 for r in $radii; do
-  bench "radius_${r}_separable" "$size" "$shadow" sspcss filter=separable "fixed_radius_px=$r" receiver_footprint=false
-  bench "radius_${r}_poisson" "$size" "$shadow" sspcss filter=poisson "fixed_radius_px=$r" receiver_footprint=false
-  bench "radius_${r}_poisson64" "$size" "$shadow" sspcss filter=poisson poisson_taps=64 "fixed_radius_px=$r" \
-    receiver_footprint=false
+  fixed="fixed_radius_px=$r:receiver_footprint=false"
+  for variant in "separable|filter=separable" "poisson|filter=poisson" "poisson64|filter=poisson:poisson_taps=64"; do
+    label="sspcss:${variant#*|}:$fixed"
+    specs+=("$label")
+    names+=("radius_${r}_${variant%%|*}=$label")
+  done
 done
+bench part_radius --techniques "$(IFS=,; echo "${specs[*]}")" --size "$size" --shadow-size "$shadow"
+python3 "$here/split_bench.py" "$out/part_radius.json" "$out" "${names[@]}"
 
 python3 "$here/sspcss_tables.py" "$out" --shadow-sizes "$shadow_sizes" --screen-sizes "$screen_sizes" \
   --radii "$radii" | tee "$out/sspcss-bench.md"

@@ -25,7 +25,7 @@ def load(directory, name):
 
 def row(data, technique, scene):
     for r in data["rows"]:
-        if r["technique"] == technique and r["scene"] == scene:
+        if r["technique"].split(":")[0] == technique and r["scene"] == scene:
             return r
     sys.exit(f"no row for {technique} on {scene}")
 
