@@ -3,7 +3,7 @@
 // the casters' depth into the depth attachment with passes/shadow_map's program and biases
 // (slope-scaled + constant polygon offset, alpha-tested casters), so that with the quads disabled
 // the shadow test is plain shadow mapping; and the RGBA32F map cleared to each texel's "no edge"
-// values. The map depth lives in the depth attachment only (the paper's green channel): the
+// values by a compute dispatch (esm_clear.comp.glsl says why not glClearTexImage). The map depth lives in the depth attachment only (the paper's green channel): the
 // quads and the test read it there, and a depth-only raster pass costs no colour bandwidth.
 #include "exec/gpu_scene.h"
 #include "exec/pass_decl_builder.h"
@@ -22,6 +22,8 @@ class DepthPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
                                         .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
     if (!p.valid()) return *p.last_error();
+    gl::ShaderProgram& clear = ctx.program({.compute = "techniques/esm/shaders/esm_clear.comp.glsl"});
+    if (!clear.valid()) return *clear.last_error();
     gl::Texture& depth = ctx.texture("depth");
     gl::Texture& esm = ctx.texture("esm");
     Result<EsmViews> views = frame_views(ctx, esm.width());
@@ -36,8 +38,14 @@ class DepthPass final : public exec::PassImpl {
     // paper's defaults for its two-pass fallback (lit-ness 0.75 -> r = 0.25, "maximal distance"
     // b = 1), which the fallback's first quad pass overwrites; mask 0.
     const bool two_pass = ctx.enumeration("overlap_resolve") == "two_pass";
-    const float no_edge[4] = {two_pass ? 0.25f : 0.0f, 0.0f, two_pass ? 1.0f : 0.0f, 0.0f};
-    glClearTexImage(esm.id(), 0, GL_RGBA, GL_FLOAT, no_edge);
+    const glm::vec4 no_edge(two_pass ? 0.25f : 0.0f, 0.0f, two_pass ? 1.0f : 0.0f, 0.0f);
+    ctx.bind_image(0, "esm", GL_WRITE_ONLY);
+    clear.program().set("u_value", no_edge);
+    ctx.dispatch_over(clear, esm);
+    // The quad passes blend into `esm` as a colour attachment: make the image stores visible to
+    // them (the graph plans barriers by the slot's declared use, an attachment, so this pass adds
+    // the one its compute clear needs).
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     fb_.bind();
     glDisable(GL_SCISSOR_TEST);  // clears obey the scissor
     const float far_depth = 1.0f;
