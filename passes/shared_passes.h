@@ -1,9 +1,14 @@
 #pragma once
 // The pass types every frame and most techniques use (one folder each under passes/).
 #include "exec/pass.h"
+#include "plugin/technique.h"
 
 namespace penumbra {
 
 void register_shared_passes(exec::PassLibrary& library);
+
+// The pass library a session runs on: the shared passes plus every registered technique's own
+// pass types (built-ins and plugins alike).
+exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry);
 
 }  // namespace penumbra

@@ -1,6 +1,5 @@
 #include "techniques/builtin_techniques.h"
 
-#include "passes/shared_passes.h"
 #include "techniques/baseline/baseline_techniques.h"
 #include "techniques/esm/esm_technique.h"
 #include "techniques/mpg/mpg_technique.h"
@@ -18,13 +17,6 @@ void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   pmchss::register_technique(registry);
   reference::register_techniques(registry);
   sspcss::register_technique(registry);
-}
-
-exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry) {
-  exec::PassLibrary library;
-  register_shared_passes(library);
-  registry.register_passes(library);
-  return library;
 }
 
 }  // namespace penumbra
