@@ -19,9 +19,15 @@ ShaderFileSystem::ShaderFileSystem() {
 ShaderFileSystem::ShaderFileSystem(std::vector<fs::path> roots, bool use_embedded)
     : roots_(std::move(roots)), use_embedded_(use_embedded) {}
 
-const ShaderFileSystem& ShaderFileSystem::default_instance() {
-  static const ShaderFileSystem instance;
+ShaderFileSystem& ShaderFileSystem::default_instance() {
+  static ShaderFileSystem instance;
   return instance;
+}
+
+void ShaderFileSystem::add_root(fs::path root) {
+  for (const fs::path& r : roots_)
+    if (r == root) return;
+  roots_.push_back(std::move(root));
 }
 
 std::optional<fs::path> ShaderFileSystem::disk_path(const std::string& path) const {

@@ -3,7 +3,8 @@
 // ("passes/blur/blur.comp.glsl"). Development builds read the source tree first, so an edited
 // file is picked up by hot reload; installed or bundled binaries fall back to the copies
 // embedded at build time (scripts/cmake/embed_shaders.cmake). PENUMBRA_SHADER_DIR overrides the
-// source tree root.
+// source tree root. A technique plugin's folder is added as a root when it is loaded
+// (plugin/plugin_library.h), so its graph JSON and GLSL are read from beside its .so.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,8 +26,15 @@ class ShaderFileSystem {
   ShaderFileSystem();
   explicit ShaderFileSystem(std::vector<std::filesystem::path> roots, bool use_embedded = true);
 
-  // Tree-wide default: PENUMBRA_SHADER_DIR, then the source tree this binary was built from.
-  static const ShaderFileSystem& default_instance();
+  // Tree-wide default: PENUMBRA_SHADER_DIR, then the source tree this binary was built from,
+  // then the folders of the plugins loaded so far. Not thread-safe: roots are added while
+  // plugins load, before rendering starts.
+  static ShaderFileSystem& default_instance();
+
+  // Searched after the roots already there (a plugin's files cannot replace the engine's);
+  // a root already present is not added twice.
+  void add_root(std::filesystem::path root);
+  const std::vector<std::filesystem::path>& roots() const { return roots_; }
 
   bool exists(const std::string& path) const;
   // The file's text, or an error naming the path and where it was looked for.

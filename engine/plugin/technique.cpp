@@ -1,9 +1,6 @@
 #include "plugin/technique.h"
 
-#include <dlfcn.h>
-
 #include <algorithm>
-#include <filesystem>
 
 #include "gl/shader_files.h"
 #include "graph/graph_json.h"
@@ -17,6 +14,13 @@ void TechniqueRegistry::add(Technique technique) {
       return;
     }
   techniques_.push_back(std::move(technique));
+}
+
+bool TechniqueRegistry::remove(const std::string& name) {
+  auto it = std::find_if(techniques_.begin(), techniques_.end(), [&](const Technique& t) { return t.name == name; });
+  if (it == techniques_.end()) return false;
+  techniques_.erase(it);
+  return true;
 }
 
 const Technique* TechniqueRegistry::find(const std::string& name) const {
@@ -55,39 +59,6 @@ Result<graph::GraphDesc> load_technique_graph(const Technique& technique) {
     return e;
   }
   return std::move(*graph);
-}
-
-Result<int> load_plugin_directory(const std::string& dir, TechniqueRegistry& registry) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    Error e = make_error("plugin directory does not exist");
-    e.file = dir;
-    return e;
-  }
-  std::vector<fs::path> libs;
-  for (const auto& entry : fs::directory_iterator(dir, ec))
-    if (entry.path().extension() == ".so") libs.push_back(entry.path());
-  std::sort(libs.begin(), libs.end());
-  int loaded = 0;
-  for (const fs::path& p : libs) {
-    void* handle = dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) {
-      Error e = make_error(std::string("cannot load plugin: ") + dlerror());
-      e.file = p.string();
-      return e;
-    }
-    using RegisterFn = void (*)(TechniqueRegistry&);
-    auto fn = reinterpret_cast<RegisterFn>(dlsym(handle, "penumbra_register_plugin"));
-    if (!fn) {
-      Error e = make_error("plugin has no extern \"C\" penumbra_register_plugin(TechniqueRegistry&)");
-      e.file = p.string();
-      return e;
-    }
-    fn(registry);  // the library stays loaded: its pass code is used until exit
-    ++loaded;
-  }
-  return loaded;
 }
 
 }  // namespace penumbra::plugin

@@ -11,8 +11,9 @@
 // The technique's description and parameters are in its graph JSON only ("description",
 // "parameters"): the CLI and the sandbox read them from there.
 //
-// graph_file is repository-relative and read through the shader file system, so it comes from
-// the source tree in development and from the embedded copy in a bundled binary.
+// graph_file is relative to a shader root and read through the shader file system: a built-in's
+// comes from the source tree in development and from the embedded copy in a bundled binary; a
+// plugin's from beside its .so (the plugin's folder is a root).
 #include <functional>
 #include <string>
 #include <vector>
@@ -33,6 +34,8 @@ class TechniqueRegistry {
  public:
   // A second technique of the same name replaces the first (a plugin may override a built-in).
   void add(Technique technique);
+  // Removes the technique of that name; false when there is none (a plugin being unloaded).
+  bool remove(const std::string& name);
   const Technique* find(const std::string& name) const;
   std::vector<std::string> names() const;  // registration order
   const std::vector<Technique>& all() const { return techniques_; }
@@ -46,9 +49,6 @@ class TechniqueRegistry {
 // The technique's graph as declared in its JSON file.
 Result<graph::GraphDesc> load_technique_graph(const Technique& technique);
 
-// Loads every shared library in `dir` (*.so) and calls its
-//   extern "C" void penumbra_register_plugin(penumbra::plugin::TechniqueRegistry&);
-// which adds techniques (their register_passes add pass types). Returns how many loaded.
-Result<int> load_plugin_directory(const std::string& dir, TechniqueRegistry& registry);
+// Shared-library plugins add techniques to a registry: plugin/plugin_library.h.
 
 }  // namespace penumbra::plugin

@@ -1,0 +1,39 @@
+#pragma once
+// What a technique plugin (a shared library loaded with --plugin-dir) exports. One line in one
+// of its files:
+//
+//   PENUMBRA_PLUGIN(my_technique::register_technique)
+//
+// defines the two extern "C" entry points the host looks up:
+//   int  penumbra_plugin_abi_version()   the PENUMBRA_PLUGIN_ABI_VERSION it was compiled against
+//   void penumbra_register_plugin(penumbra::plugin::TechniqueRegistry&)   adds its techniques
+// The host calls the second only when the first returns its own version
+// (plugin/plugin_library.h); a library without them, or of another version, is refused with a
+// message naming the file and both versions.
+#include "plugin/technique.h"
+
+// The plugin ABI: the C++ types a plugin and libpenumbra exchange (TechniqueRegistry, Technique,
+// PassLibrary, PassType, PassImpl, PassContext and what they hold). Bump it with any change to
+// their layout, to a virtual function or to a signature a plugin may call; a plugin built
+// against another value is refused instead of crashing inside mismatched code.
+#define PENUMBRA_PLUGIN_ABI_VERSION 1
+
+namespace penumbra::plugin {
+
+inline constexpr int kPluginAbiVersion = PENUMBRA_PLUGIN_ABI_VERSION;
+inline constexpr const char* kPluginAbiVersionSymbol = "penumbra_plugin_abi_version";
+inline constexpr const char* kPluginRegisterSymbol = "penumbra_register_plugin";
+
+using PluginAbiVersionFn = int (*)();
+using PluginRegisterFn = void (*)(TechniqueRegistry&);
+
+}  // namespace penumbra::plugin
+
+#define PENUMBRA_PLUGIN(register_fn)                                                           \
+  extern "C" __attribute__((visibility("default"))) int penumbra_plugin_abi_version() {          \
+    return PENUMBRA_PLUGIN_ABI_VERSION;                                                          \
+  }                                                                                              \
+  extern "C" __attribute__((visibility("default"))) void penumbra_register_plugin(             \
+      ::penumbra::plugin::TechniqueRegistry& registry) {                                         \
+    register_fn(registry);                                                                       \
+  }
