@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "case_file.h"
-#include "support/temp_dir.h"
+#include "test_support/temp_dir.h"
 
 namespace penumbra::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "scene/builtin_scenes.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::test {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "baseline_frame.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::test {

@@ -6,7 +6,7 @@
 #include "exec/executor.h"
 #include "graph/builder.h"
 #include "graph/compiler.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 #include "test_passes.h"
 
 using namespace penumbra;

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "gl/context.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 
 using namespace penumbra;
 

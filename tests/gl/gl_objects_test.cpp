@@ -9,7 +9,7 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "gl/timer_query.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 
 using namespace penumbra;
 using gl::Format;

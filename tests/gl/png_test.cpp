@@ -1,13 +1,13 @@
 #include <gtest/gtest.h>
 
-#include "support/temp_dir.h"
+#include "test_support/temp_dir.h"
 #include <stb/stb_image.h>
 
 #include <filesystem>
 
 #include "gl/texture.h"
 #include "gl/texture_png.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 
 using namespace penumbra;
 namespace fs = std::filesystem;

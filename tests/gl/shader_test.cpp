@@ -10,7 +10,7 @@
 #include "gl/program.h"
 #include "gl/shader_preprocessor.h"
 #include "gl/texture.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 
 using namespace penumbra;
 namespace fs = std::filesystem;

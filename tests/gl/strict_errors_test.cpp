@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "gl/debug_output.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 
 using namespace penumbra;
 

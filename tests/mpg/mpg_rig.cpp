@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "metrics/heat_map.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::test {

@@ -8,7 +8,7 @@
 
 #include "metrics/heat_map.h"
 #include "techniques/builtin_techniques.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 
 namespace penumbra::test {
 

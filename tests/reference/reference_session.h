@@ -8,7 +8,7 @@
 #include "cli/eval_capture.h"
 #include "plugin/technique_session.h"
 #include "scene/builtin_scenes.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::test {

@@ -8,7 +8,7 @@
 #include "app/controller.h"
 #include "app/script.h"
 #include "app/script_runner.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 #include "techniques/builtin_techniques.h"
 #include "tiny_technique.h"
 

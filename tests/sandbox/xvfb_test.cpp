@@ -4,7 +4,7 @@
 // screenshot is read back (stb_image) and must not be blank. A missing xvfb-run FAILS the test.
 #include <gtest/gtest.h>
 
-#include "support/temp_dir.h"
+#include "test_support/temp_dir.h"
 #include <unistd.h>
 
 #include <cstdio>

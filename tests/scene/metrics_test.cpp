@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "support/temp_dir.h"
+#include "test_support/temp_dir.h"
 
 #include "metrics/heat_map.h"
 #include "metrics/mask_metrics.h"
