@@ -1,5 +1,7 @@
 #include "techniques/builtin_techniques.h"
 
+#include "plugin/plugin_library.h"
+
 #include "techniques/baseline/baseline_techniques.h"
 #include "techniques/esm/esm_technique.h"
 #include "techniques/mpg/mpg_technique.h"
@@ -17,6 +19,12 @@ void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   pmchss::register_technique(registry);
   reference::register_techniques(registry);
   sspcss::register_technique(registry);
+}
+
+Status register_all_techniques(plugin::TechniqueRegistry& registry, const std::vector<std::string>& plugin_dirs) {
+  register_builtin_techniques(registry);
+  if (Result<int> loaded = plugin::load_plugins(plugin_dirs, registry); !loaded) return loaded.error();
+  return {};
 }
 
 }  // namespace penumbra

@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "util/file_write.h"
 #include "cli/context_option.h"
+#include "cli/plugin_option.h"
 #include "cli/eval_capture.h"
 #include "cli/scene_option.h"
 #include "cli/technique_spec.h"
@@ -28,6 +29,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"set", true, true, "k=v", "set a parameter of every technique that has it"},
     {"json", true, false, "OUT.json", "write the results as JSON"},
     context_option_spec(),
+    plugin_dir_option_spec(),
 };
 
 int fail(const Error& e) {
@@ -113,7 +115,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
   auto args = parse_args(argv, kSpecs);
   if (!args) return fail(args.error());
   plugin::TechniqueRegistry registry;
-  register_builtin_techniques(registry);
+  if (Status s = register_all_techniques(registry, args->all("plugin-dir")); !s) return fail(s.error());
   auto options = parse_bench_options(*args, registry);
   if (!options) return fail(options.error());
   const BenchOptions& o = *options;

@@ -11,6 +11,7 @@
 #include "cli/command.h"
 #include "util/file_write.h"
 #include "cli/context_option.h"
+#include "cli/plugin_option.h"
 #include "cli/eval_capture.h"
 #include "cli/eval_report.h"
 #include "cli/scene_option.h"
@@ -41,6 +42,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"light-size", true, false, "S", "override the scene light's size (emitter diameter, world units) for every "
                                      "technique and the reference; 0 = exact hard shadows"},
     context_option_spec(),
+    plugin_dir_option_spec(),
 };
 
 constexpr int kWarmupFrames = 3;
@@ -194,7 +196,7 @@ int cmd_eval(const std::vector<std::string>& argv) {
   auto args = parse_args(argv, kSpecs);
   if (!args) return fail(args.error());
   plugin::TechniqueRegistry registry;
-  register_builtin_techniques(registry);
+  if (Status s = register_all_techniques(registry, args->all("plugin-dir")); !s) return fail(s.error());
   auto options = parse_eval_options(*args, registry);
   if (!options) return fail(options.error());
   const EvalOptions& o = *options;

@@ -20,8 +20,9 @@ const char* kHelp =
     "usage: penumbra graph FILE.json [--plan] [--dot OUT.dot] [--screen WxH] [--shadow N]\n"
     "       penumbra graph --pass-types\n"
     "                      [--set k=v]... [--no-reuse] [--extended-lifetimes] [--frame | --no-frame]\n"
-    "Compiles a render-graph file (docs/graph-format.md) against every built-in pass type and\n"
-    "reports errors or the plan. A technique graph (one that reads the frame's scene, camera,\n"
+    "                      [--plugin-dir DIR]...\n"
+    "Compiles a render-graph file (docs/graph-format.md) against every built-in pass type (and\n"
+    "those of the plugins loaded) and reports errors or the plan. A technique graph (one that reads the frame's scene, camera,\n"
     "light or gbuffer_* without declaring them) is composed into the frame it runs in first.\n"
     "  --plan                print the compiled plan (order, culled, textures, lifetimes,\n"
     "                        barriers, memory)\n"
@@ -35,6 +36,8 @@ const char* kHelp =
     "                        epilogue; docs/writing-a-technique.md)\n"
     "  --no-frame            never compose: compile the file as it is\n"
     "  --pass-types          list every registered pass type with its slots and parameters\n"
+    "  --plugin-dir DIR      also load technique plugins from DIR (repeatable); then from\n"
+    "                        PENUMBRA_PLUGIN_PATH (colon-separated)\n"
     "Exit codes: 0 ok, 2 invalid input, 1 internal error.\n";
 
 int usage_error(const std::string& message) {
@@ -44,8 +47,7 @@ int usage_error(const std::string& message) {
 
 // What a graph file can use: every pass type with its slots (access, usage, formats) and
 // parameters (type, default, range).
-int print_pass_types() {
-  const graph::PassTypeRegistry& registry = cli_pass_registry();
+int print_pass_types(const graph::PassTypeRegistry& registry) {
   for (const std::string& name : registry.names()) {
     const graph::PassTypeDecl& t = *registry.find(name);
     std::cout << name << (t.side_effect ? " (side effect)" : "") << "\n  " << t.description << "\n";
@@ -83,7 +85,8 @@ int run(const std::vector<std::string>& args) {
   bool print_plan = false, frame = false, no_frame = false;
   graph::CompileSettings settings;
   graph::CompileOptions options;
-  std::vector<std::string> sets;
+  std::vector<std::string> sets, plugin_dirs;
+  bool pass_types = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](std::string& out) {
@@ -96,7 +99,10 @@ int run(const std::vector<std::string>& args) {
       std::cout << kHelp;
       return 0;
     } else if (a == "--pass-types") {
-      return print_pass_types();
+      pass_types = true;
+    } else if (a == "--plugin-dir") {
+      if (!value(v)) return usage_error("--plugin-dir needs DIR");
+      plugin_dirs.push_back(v);
     } else if (a == "--plan") {
       print_plan = true;
     } else if (a == "--frame") {
@@ -129,6 +135,12 @@ int run(const std::vector<std::string>& args) {
       return usage_error("one graph file expected, got also '" + a + "'");
     }
   }
+  auto library = cli_pass_library(plugin_dirs);
+  if (!library) {
+    std::cerr << "penumbra graph: " << library.error().to_string() << "\n";
+    return library.error().exit_code();
+  }
+  if (pass_types) return print_pass_types(library->declarations());
   if (file.empty()) return usage_error("missing FILE.json");
   if (frame && no_frame) return usage_error("--frame and --no-frame exclude each other");
 
@@ -153,7 +165,7 @@ int run(const std::vector<std::string>& args) {
       return 2;
     }
   }
-  auto plan = graph::compile(*desc, cli_pass_registry(), params, settings, options);
+  auto plan = graph::compile(*desc, library->declarations(), params, settings, options);
   if (!plan) {
     for (const auto& e : plan.errors()) std::cerr << e.to_string() << "\n";
     return 2;

@@ -1,6 +1,6 @@
 #pragma once
 // `penumbra graph FILE.json [--plan] [--dot OUT.dot] [--screen WxH] [--shadow N] [--set k=v]...`
-// Compiles a graph file against cli_pass_registry() and prints the plan / writes Graphviz.
+// Compiles a graph file against cli_pass_library() and prints the plan / writes Graphviz.
 // args exclude "penumbra graph". Exit codes: 0 ok, 2 invalid input (every error on stderr,
 // one per line, "file:line:col: where: message"), 1 internal error.
 #include <string>

@@ -5,6 +5,7 @@
 
 #include "cli/command.h"
 #include "cli/context_option.h"
+#include "cli/plugin_option.h"
 #include "cli/scene_option.h"
 #include "gl/texture_png.h"
 #include "plugin/technique_session.h"
@@ -27,6 +28,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"frames", true, false, "N", "frames to run before writing (progressive techniques; default 1)"},
     {"light-size", true, false, "S", "override the scene light's size (emitter diameter, world units); 0 = hard"},
     context_option_spec(),
+    plugin_dir_option_spec(),
 };
 
 int fail(const Error& e) {
@@ -104,7 +106,7 @@ int cmd_render(const std::vector<std::string>& argv) {
   if (!all && out.empty() && mask.empty()) out = "render.png";
 
   plugin::TechniqueRegistry registry;
-  register_builtin_techniques(registry);
+  if (Status s = register_all_techniques(registry, args->all("plugin-dir")); !s) return fail(s.error());
   std::vector<std::string> techniques;
   if (all) {
     techniques = registry.names();

@@ -1,4 +1,4 @@
-// penumbra techniques [NAME...] [--json | --markdown] [--plugin-dir DIR]: every registered
+// penumbra techniques [NAME...] [--json | --markdown] [--plugin-dir DIR]...: every registered
 // technique (or the named ones) with its description and parameters, read from the technique's
 // graph JSON (plugin::load_technique_graph): the one description the sandbox UI, presets and
 // `--set` also use. `--markdown` prints the parameter table a technique's README embeds (a test
@@ -9,6 +9,7 @@
 
 #include "cli/args.h"
 #include "cli/command.h"
+#include "cli/plugin_option.h"
 #include "plugin/technique.h"
 #include "techniques/builtin_techniques.h"
 
@@ -18,7 +19,7 @@ namespace {
 const std::vector<OptionSpec> kSpecs = {
     {"json", false, false, "", "print a JSON array instead of text"},
     {"markdown", false, false, "", "print each technique's parameter table as Markdown (the README tables)"},
-    {"plugin-dir", true, false, "DIR", "also load technique plugins (*.so) from DIR"},
+    plugin_dir_option_spec(),
 };
 
 nlohmann::ordered_json value_json(const graph::ParamValue& v) {
@@ -100,7 +101,7 @@ void print_text(const plugin::Technique& t, const graph::GraphDesc& g) {
 
 int cmd_techniques(const std::vector<std::string>& argv) {
   if (help_requested(argv))
-    return print_help("penumbra techniques [NAME...] [--json | --markdown] [--plugin-dir DIR]",
+    return print_help("penumbra techniques [NAME...] [--json | --markdown] [--plugin-dir DIR]...",
                       "Lists every registered shadow technique (or the named ones) with its\n"
                       "description and parameters (type, default, range, unit, description,\n"
                       "structural), all read from the technique's graph JSON.",
@@ -115,12 +116,10 @@ int cmd_techniques(const std::vector<std::string>& argv) {
     return 2;
   }
   plugin::TechniqueRegistry registry;
-  register_builtin_techniques(registry);
-  if (auto dir = args->get("plugin-dir"))
-    if (auto loaded = plugin::load_plugin_directory(*dir, registry); !loaded) {
-      std::fprintf(stderr, "penumbra techniques: %s\n", loaded.error().to_string().c_str());
-      return loaded.error().exit_code();
-    }
+  if (Status s = register_all_techniques(registry, args->all("plugin-dir")); !s) {
+    std::fprintf(stderr, "penumbra techniques: %s\n", s.error().to_string().c_str());
+    return s.error().exit_code();
+  }
 
   std::vector<const plugin::Technique*> selected;
   for (const std::string& name : args->positionals) {

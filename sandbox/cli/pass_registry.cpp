@@ -4,13 +4,10 @@
 
 namespace penumbra::cli {
 
-const graph::PassTypeRegistry& cli_pass_registry() {
-  static const exec::PassLibrary library = [] {
-    plugin::TechniqueRegistry techniques;
-    register_builtin_techniques(techniques);
-    return make_pass_library(techniques);
-  }();
-  return library.declarations();
+Result<exec::PassLibrary> cli_pass_library(const std::vector<std::string>& plugin_dirs) {
+  plugin::TechniqueRegistry techniques;
+  if (Status s = register_all_techniques(techniques, plugin_dirs); !s) return s.error();
+  return make_pass_library(techniques);
 }
 
 }  // namespace penumbra::cli

@@ -1,10 +1,15 @@
 #pragma once
-// The pass type declarations `penumbra graph` compiles graph files against: every real pass
-// type, the shared passes and every built-in technique's own.
-#include "graph/pass_types.h"
+// The pass types `penumbra graph` compiles graph files against: the shared passes, every
+// built-in technique's own and those of the plugins in `plugin_dirs` and PENUMBRA_PLUGIN_PATH.
+#include <string>
+#include <vector>
+
+#include "exec/pass.h"
+#include "util/error.h"
 
 namespace penumbra::cli {
 
-const graph::PassTypeRegistry& cli_pass_registry();
+// Errors name the plugin file or directory that failed (bad input).
+Result<exec::PassLibrary> cli_pass_library(const std::vector<std::string>& plugin_dirs);
 
 }  // namespace penumbra::cli

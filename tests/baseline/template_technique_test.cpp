@@ -1,10 +1,11 @@
 // techniques/_template is not a built-in, so nothing else compiles it: this test builds its
 // pass type, registers the technique beside the built-ins and renders it, so the copy-me
-// folder always matches the real pass library and graph format.
+// folder always matches the real pass library and graph format. As a shared-library plugin it
+// is tested in tests/plugin.
 #include <gtest/gtest.h>
 
 #include "baseline_frame.h"
-#include "support/test_context.h"
+#include "test_support/gl_context.h"
 #include "techniques/_template/template_technique.h"
 #include "techniques/builtin_techniques.h"
 
@@ -39,28 +40,6 @@ TEST(TemplateTechnique, CompilesAgainstThePassLibraryAndRenders) {
     EXPECT_GT(shadowed, 20u);
   }
   EXPECT_EQ(session.compile_count(), 1) << "a uniform parameter must not recompile";
-}
-
-// The same folder built as a shared library (tests/baseline/CMakeLists.txt, the recipe of
-// docs/writing-a-technique.md) loads through plugin::load_plugin_directory and renders.
-TEST(TemplateTechnique, LoadsAsASharedLibraryPluginAndRenders) {
-  gl_context();
-  plugin::TechniqueRegistry registry;
-  register_builtin_techniques(registry);
-  Result<int> loaded = plugin::load_plugin_directory(PENUMBRA_TEST_PLUGIN_DIR, registry);
-  ASSERT_TRUE(loaded) << loaded.error().to_string();
-  EXPECT_EQ(*loaded, 1);
-  ASSERT_NE(registry.find("template"), nullptr);
-  exec::PassLibrary library = make_pass_library(registry);
-  ASSERT_NE(library.find("template_mask"), nullptr);
-  plugin::TechniqueSession session(registry, library);
-  session.set_scene(builtin_scene("ball"));
-  ASSERT_TRUE(session.resize(64, 48));
-  ASSERT_TRUE(session.set_technique("template"));
-  ASSERT_TRUE(session.render());
-  size_t shadowed = 0;
-  for (float v : session.executor().resource("shadow_mask")->read()) shadowed += v == 0.0f;
-  EXPECT_GT(shadowed, 0u);
 }
 
 }  // namespace

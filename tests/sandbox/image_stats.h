@@ -11,6 +11,7 @@ struct ImageStats {
   int width = 0, height = 0;
   double mean = 0.0;      // of the luminance, 0..255
   double variance = 0.0;  // of the luminance
+  double dark = 0.0, bright = 0.0;  // fractions of pixels with luminance < 64 and > 191
 };
 
 // Statistics of the columns [x_from * width, width): the sandbox panel covers the left part.
@@ -29,10 +30,14 @@ inline ImageStats png_stats(const std::string& path, double x_from = 0.0) {
     double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
     sum += y;
     sum2 += y * y;
+    s.dark += y < 64.0;
+    s.bright += y > 191.0;
   }
   stbi_image_free(data);
   s.mean = sum / double(n);
   s.variance = sum2 / double(n) - s.mean * s.mean;
+  s.dark /= double(n);
+  s.bright /= double(n);
   return s;
 }
 
