@@ -340,6 +340,7 @@ Status SandboxController::render_frame() {
   auto now = std::chrono::steady_clock::now();
   if (now - last_reload_ > std::chrono::milliseconds(500)) {
     reload_shaders();
+    if (reload_hook_) reload_hook_();
     last_reload_ = now;
   }
   if (Status s = primary_->render(); !s) return s;
@@ -412,6 +413,46 @@ Status SandboxController::render_frame() {
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return {};
+}
+
+Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) {
+  const plugin::TechniqueSession& old = *primary_;
+  const std::string technique = old.technique();
+  const graph::ParameterSet params = old.params();
+  const std::optional<scene::Scene> scene = old.has_scene() ? std::optional(old.scene()) : std::nullopt;
+  const scene::Camera camera = primary_->camera();
+  const scene::Light light = primary_->light();
+  const graph::CompileOptions options = primary_->compile_options();
+  const bool immediate = primary_->executor().options().immediate;
+  const int shadow_size = old.settings().shadow_size;
+  secondary_.reset();
+  primary_.reset();
+  descriptions_.clear();
+  const Status swapped = swap();
+
+  primary_ = std::make_unique<plugin::TechniqueSession>(registry_, library_);
+  if (scene) primary_->set_scene(*scene);
+  primary_->camera() = camera;
+  primary_->light() = light;
+  primary_->compile_options() = options;
+  primary_->executor().options().immediate = immediate;
+  if (Status s = primary_->resize(width_, height_); !s) return note(s);
+  if (Status s = primary_->set_shadow_size(shadow_size); !s) return note(s);
+  const bool still_there = registry_.find(technique) != nullptr;
+  if (!still_there && registry_.names().empty())
+    return note(make_error("no techniques are registered after the plugin reload", ErrorKind::internal));
+  Status selected = primary_->set_technique(still_there ? technique : registry_.names().front());
+  if (!selected) {  // the new build's graph does not compile: fall back to the first technique
+    if (Status s = primary_->set_technique(registry_.names().front()); !s) return note(s);
+  }
+  if (selected && still_there)
+    for (const graph::ParamDesc& d : params.descs())
+      if (primary_->params().find(d.name)) (void)primary_->set_param(d.name, *params.get(d.name));  // may no longer fit
+  if (!viewer_.resource.empty())
+    if (Status s = view_resource(viewer_.resource); !s) (void)view_resource("");  // gone from the new graph
+  if (compare_.enabled && (!registry_.find(compare_.with) || !configure_secondary())) compare_.enabled = false;
+  if (!swapped) return note(swapped);
+  return note(selected);
 }
 
 Status SandboxController::save_presentation_png(const std::string& path) const {

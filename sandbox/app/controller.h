@@ -17,6 +17,7 @@
 // and swapping one never recompiles the other. The cost is a second scene upload and a second
 // G-buffer per frame, which only compare mode pays.
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -114,6 +115,16 @@ class SandboxController {
   // Drains glGetError; an error lists every code seen.
   static Status check_gl_errors(const std::string& when);
 
+  // --- plugin reload (app/plugin_reload.h) --------------------------------------------------
+  // Destroys both sessions (their pass objects run plugin code), runs `swap` (which replaces
+  // code in the registry and pass library this controller was made with), then builds them
+  // again with the same scene, camera, light, sizes, debug switches and viewed resource, the
+  // same technique when it still exists (else the first) and every parameter value that still
+  // fits. The sessions come back whatever `swap` returns; its error is returned.
+  Status rebuild_sessions(const std::function<Status()>& swap);
+  // Runs from render_frame() every ~0.5 s, beside the shader reload (the plugin reloader's poll).
+  void set_reload_hook(std::function<void()> hook) { reload_hook_ = std::move(hook); }
+
   // The last action's outcome for the UI: "" after success.
   const std::string& message() const { return message_; }
   Status note(Status s);  // records s in message() and returns it
@@ -136,6 +147,7 @@ class SandboxController {
   std::uint64_t frames_ = 0;
   std::string message_;
   std::chrono::steady_clock::time_point last_reload_ = std::chrono::steady_clock::now();
+  std::function<void()> reload_hook_;
 };
 
 }  // namespace penumbra::sandbox

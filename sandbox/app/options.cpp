@@ -1,6 +1,7 @@
 #include "app/options.h"
 
 #include "cli/args.h"
+#include "cli/plugin_option.h"
 
 namespace penumbra::sandbox {
 
@@ -18,6 +19,7 @@ const std::vector<cli::OptionSpec>& specs() {
       {"write-exhaustive-script", true, false, "FILE",
        "write a script that visits every technique and parameter (for tests), then exit"},
       {"screenshot-dir", true, false, "DIR", "where the exhaustive script's screenshots go (default .)"},
+      cli::plugin_dir_option_spec(),
   };
   return s;
 }
@@ -74,6 +76,7 @@ Result<SandboxOptions> parse_sandbox_options(const std::vector<std::string>& arg
   }
   if (auto v = args->get("write-exhaustive-script")) o.exhaustive_script = *v;
   if (auto v = args->get("screenshot-dir")) o.screenshot_dir = *v;
+  o.plugin_dirs = args->all("plugin-dir");
   return o;
 }
 

@@ -2,7 +2,7 @@
 // Command line of penumbra-sandbox (GL-free, unit-tested):
 //   penumbra-sandbox [--scene NAME|FILE] [--technique T] [--size WxH] [--shadow-size N]
 //                    [--script FILE] [--screenshot OUT.png] [--context glfw|osmesa|egl]
-//                    [--write-exhaustive-script FILE [--screenshot-dir DIR]]
+//                    [--write-exhaustive-script FILE [--screenshot-dir DIR]] [--plugin-dir DIR]...
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +21,7 @@ struct SandboxOptions {
   std::string context;  // empty: glfw
   std::string exhaustive_script;  // tool mode: write the generated test script and exit
   std::string screenshot_dir = ".";
+  std::vector<std::string> plugin_dirs;  // then PENUMBRA_PLUGIN_PATH; reloaded when rebuilt
   bool help = false;
 };
 

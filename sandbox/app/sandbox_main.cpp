@@ -4,6 +4,7 @@
 
 #include "app/controller.h"
 #include "app/options.h"
+#include "app/plugin_reload.h"
 #include "app/preset.h"
 #include "app/script.h"
 #include "app/script_runner.h"
@@ -50,9 +51,11 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
     return 0;
   }
 
+  PluginReloader plugins;  // declared first: it unloads plugin code after all that runs it is gone
   plugin::TechniqueRegistry registry;
   register_builtin_techniques(registry);
   if (extra) extra(registry);
+  if (Status s = plugins.load(o.plugin_dirs, registry); !s) return fail(s.error());
   if (!o.exhaustive_script.empty()) return write_exhaustive(registry, o);
 
   // A bad script is reported before any window opens.
@@ -77,6 +80,7 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
   if (!context) return fail(context.error());
 
   SandboxController controller(registry, library);
+  controller.set_reload_hook([&] { plugins.poll(controller, registry, library); });
   if (o.shadow_size)
     if (Status s = controller.session().set_shadow_size(*o.shadow_size); !s) return fail(s.error());
   if (Status s = controller.init(o.scene, o.technique, o.width, o.height); !s) return fail(s.error());
