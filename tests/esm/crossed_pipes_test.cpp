@@ -65,7 +65,7 @@ Crossing examine(const metrics::MaskImage& esm, const metrics::MaskImage& refere
 TEST(EsmCrossedPipes, NoCracksOrLitHolesWhereSilhouettesCross) {
   for (const float gap : {0.0f, 0.3f}) {
     const scene::Scene s = test::crossed_pipes(0.12f, gap);
-    test::TechniqueRig rig(kSize, kSize, 128);
+    test::EsmRig rig(kSize, kSize, 128);
     rig.set_scene(s);
     rig.use("esm");
     rig.render();

@@ -37,7 +37,7 @@ double edge_error_of(test::TechniqueRig& rig, const std::string& technique, int 
 void check_scene(const std::string& name) {
   scene::Scene s = *scene::make_builtin_scene(name);
   s.light.size = 0.0f;
-  test::TechniqueRig rig(kWidth, kHeight, 512);
+  test::EsmRig rig(kWidth, kHeight, 512);
   rig.set_scene(s);
   rig.use("hard");
   rig.render();  // the G-buffer every technique shares

@@ -9,7 +9,7 @@
 using namespace penumbra;
 
 TEST(EsmSmoke, BallDirectionalWritesMaskAndDebugViews) {
-  test::TechniqueRig rig(512, 384, 256);
+  test::EsmRig rig(512, 384, 256);
   rig.set_scene(*scene::make_builtin_scene("ball"));
   rig.use("esm");
   rig.render();

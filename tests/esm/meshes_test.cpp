@@ -97,7 +97,7 @@ Interior interior(const metrics::MaskImage& mask, const metrics::MaskImage& plai
 
 void check(bool bad_input) {
   const scene::Scene s = awkward_meshes(bad_input);
-  test::TechniqueRig rig(256, 192, 256);
+  test::EsmRig rig(256, 192, 256);
   rig.set_scene(s);
   rig.use("esm");
   rig.render();
@@ -146,7 +146,7 @@ TEST(EsmMeshes, SeamedSolidsMarkOnlyTheirOutline) {
   s.light = scene::directional_light_for(s.bounds, glm::normalize(glm::vec3(-0.3f, -1.0f, -0.45f)), 0.0f);
   s.camera = test::view({0, 3, 4}, {0, 1, 0}, 50.0f);
   constexpr int kMap = 256;
-  test::TechniqueRig rig(64, 48, kMap);
+  test::EsmRig rig(64, 48, kMap);
   rig.set_scene(s);
   rig.use("esm");
   rig.render();

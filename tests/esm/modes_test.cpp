@@ -36,7 +36,7 @@ TEST(EsmModes, WithoutQuadsItIsThePlainShadowMapExactly) {
       s.light.type = scene::LightType::spot;
       s.light.spot_angle = glm::radians(45.0f);
     }
-    test::TechniqueRig rig(192, 144, 256);
+    test::EsmRig rig(192, 144, 256);
     rig.set_scene(s);
     rig.use("hard");
     rig.render();
@@ -56,7 +56,7 @@ TEST(EsmModes, WithoutQuadsItIsThePlainShadowMapExactly) {
 // The paper's fallback for hardware without MAX blending with those factors: one pass that
 // overwrites, then a MAX pass. Both resolve overlaps to the same map.
 TEST(EsmModes, TwoPassFallbackGivesTheSameShadow) {
-  test::TechniqueRig rig(192, 144, 256);
+  test::EsmRig rig(192, 144, 256);
   rig.set_scene(test::crossed_pipes(0.12f, 0.3f));
   rig.use("esm");
   rig.render();
@@ -74,7 +74,7 @@ TEST(EsmModes, TwoPassFallbackGivesTheSameShadow) {
 // The debug views: the silhouette mask marks a band around every silhouette and nothing else;
 // the edge-distance channel stays within the quad band (texels).
 TEST(EsmModes, DebugViewsShowTheSilhouetteBandAndItsDistances) {
-  test::TechniqueRig rig(128, 96, 256);
+  test::EsmRig rig(128, 96, 256);
   rig.set_scene(*scene::make_builtin_scene("ball"));
   rig.use("esm");
   rig.render();
@@ -103,7 +103,7 @@ TEST(EsmModes, DebugViewsShowTheSilhouetteBandAndItsDistances) {
 
 // aa_width = 0 gives a binary mask (sub-texel edges, no ramp); the default ramp is one pixel.
 TEST(EsmModes, ZeroRampWidthIsBinary) {
-  test::TechniqueRig rig(192, 144, 256);
+  test::EsmRig rig(192, 144, 256);
   rig.set_scene(*scene::make_builtin_scene("ball"));
   rig.use("esm");
   rig.set({"aa_width=0"});

@@ -25,7 +25,7 @@ const char* kOneMapTechniques[] = {"hard", "pcf", "pcss", "pmchss"};
 }  // namespace
 
 TEST(PointLightOneMap, OutsideTheBoundsCastsAShadowThroughAFittedFrustum) {
-  test::TechniqueRig rig(96, 72, 512);
+  test::EsmRig rig(96, 72, 512);
   rig.set_scene(ball_with_point_light({0.0f, 5.0f, -1.5f}));
   for (const char* t : kOneMapTechniques) {
     rig.use(t);
@@ -39,7 +39,7 @@ TEST(PointLightOneMap, OutsideTheBoundsCastsAShadowThroughAFittedFrustum) {
 }
 
 TEST(PointLightOneMap, InsideTheBoundsIsABadInputErrorNamingTheFix) {
-  test::TechniqueRig rig(64, 48, 256);
+  test::EsmRig rig(64, 48, 256);
   rig.set_scene(ball_with_point_light({0.0f, 1.0f, 1.0f}));
   for (const char* t : kOneMapTechniques) {
     rig.use(t);

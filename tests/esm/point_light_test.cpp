@@ -26,7 +26,7 @@ const glm::vec3 kEye(-2.0f, 1.5f, 2.2f);
 
 TEST(EsmPointLight, SixFacesNoSeams) {
   const scene::Scene s = test::point_lit_room(kLight);
-  test::TechniqueRig rig(kSize, kSize, 3 * kFace);
+  test::EsmRig rig(kSize, kSize, 3 * kFace);
   rig.set_scene(s);
   rig.use("esm");
   Result<esm::EsmViews> views = esm::make_esm_views(s.light, {}, s.bounds, 3 * kFace);
@@ -122,7 +122,7 @@ TEST(EsmPointLight, SixFacesNoSeams) {
 // Six faces need a map of at least three 16-texel tiles a side; smaller is a clear bad-input
 // error, not a broken picture.
 TEST(EsmPointLight, MapTooSmallForSixFacesIsAnError) {
-  test::TechniqueRig rig(64, 64, 32);
+  test::EsmRig rig(64, 64, 32);
   rig.set_scene(test::point_lit_room(kLight));
   rig.use("esm");
   Status s = rig.try_render();
