@@ -1,6 +1,8 @@
 // The two references must agree: same light model (scene::light_sample_points, same N = M
 // points and seed), so the remaining difference is the raster method's depth-map discretisation
 // and bias. 128x128 screen, N = M = 256, 2048^2 sample maps.
+#include <gtest/gtest.h>
+
 #include "metrics/heat_map.h"
 #include "metrics/mask_metrics.h"
 #include "reference_session.h"

@@ -1,5 +1,7 @@
 // Progressive raster accumulation: it converges towards the ray-traced reference as samples
 // come in, and the reset rule restarts it when the light moves.
+#include <gtest/gtest.h>
+
 #include "metrics/mask_metrics.h"
 #include "reference_session.h"
 #include "techniques/reference/reference_progress.h"
@@ -46,12 +48,12 @@ TEST(ReferenceProgressive, MovingTheLightResetsTheCount) {
   const std::uint64_t resets = p.resets;
   r.render();  // nothing changed: keeps accumulating
   EXPECT_EQ(reference::reference_progress().done, 32);
-  r.session->light().position += glm::vec3(0.3f, 0.0f, 0.0f);
+  r.session().light().position += glm::vec3(0.3f, 0.0f, 0.0f);
   r.render();
   p = reference::reference_progress();
   EXPECT_EQ(p.done, 8) << "a moved light must restart the accumulation";
   EXPECT_EQ(p.resets, resets + 1);
-  r.session->camera().position += glm::vec3(0.0f, 0.1f, 0.0f);
+  r.session().camera().position += glm::vec3(0.0f, 0.1f, 0.0f);
   r.render();
   EXPECT_EQ(reference::reference_progress().done, 8) << "a moved camera must restart the accumulation";
   r.render(20);  // runs to completion and stops there
@@ -70,7 +72,7 @@ TEST(ReferenceProgressive, RaytracedTracesOnlyWhenInputsChange) {
   EXPECT_EQ(reference::reference_progress().resets, resets);
   const metrics::MaskImage before = r.mask();
   // Turn the light (a directional light's position alone does not move its shadows).
-  r.session->light().direction = glm::normalize(r.session->light().direction + glm::vec3(0.3f, 0.0f, 0.0f));
+  r.session().light().direction = glm::normalize(r.session().light().direction + glm::vec3(0.3f, 0.0f, 0.0f));
   r.render();
   EXPECT_EQ(reference::reference_progress().resets, resets + 1);
   EXPECT_NE(before.pixels, r.mask().pixels);
