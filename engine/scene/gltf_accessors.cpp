@@ -1,5 +1,6 @@
 #include "scene/gltf_accessors.h"
 
+#include <cmath>
 #include <cstring>
 
 #include <tiny_gltf.h>
@@ -106,6 +107,11 @@ Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int acces
   for (size_t i = 0; i < v->count; ++i) {
     const uint8_t* p = v->data + i * v->stride;
     out[i] = {load<float>(p), load<float>(p + 4), load<float>(p + 8)};
+    // A NaN or infinite position draws nothing (or everything) and poisons the bounds the camera
+    // and light are fitted to: refuse it where it is.
+    if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
+      return accessor_error(file, what, "accessor " + std::to_string(accessor) + " element " + std::to_string(i) +
+                                            " is not finite (NaN or infinity)");
   }
   return out;
 }

@@ -1,17 +1,23 @@
 #include "scene/gltf_loader.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <spdlog/spdlog.h>
 #include <tiny_gltf.h>
 
 #include "scene/gltf_accessors.h"
 
 namespace penumbra::scene {
 namespace {
+
+// Extensions a file may list as required: the ones whose meaning the loader implements.
+constexpr const char* kSupportedRequiredExtensions[] = {"KHR_lights_punctual"};
 
 Error file_error(const std::string& file, std::string message, std::string where = {}) {
   Error e = make_error(std::move(message));
@@ -35,8 +41,17 @@ const char* mode_name(int mode) {
 
 // Any channel layout tinygltf decodes (1-4 channels, 8 or 16 bits) -> RGBA8.
 Result<Image> convert_image(const tinygltf::Image& src, const std::string& file, size_t index) {
-  const std::string where = "image " + std::to_string(index) + " '" + src.uri + src.name + "'";
+  const std::string where = "image " + std::to_string(index) + " '" + shortened(src.uri + src.name) + "'";
   const int bytes = src.bits == 16 ? 2 : 1;
+  // tinygltf leaves an external image it could not read undecoded: say whether the file is there.
+  if (src.image.empty() && !src.uri.empty() && src.uri.rfind("data:", 0) != 0) {
+    const std::filesystem::path image = std::filesystem::path(file).parent_path() / src.uri;
+    std::error_code ec;
+    if (!std::filesystem::exists(image, ec))
+      return file_error(file, "image file '" + shortened(src.uri) + "' is missing (looked next to the file)", where);
+    return file_error(file, "image file '" + shortened(src.uri) + "' could not be decoded (PNG or JPEG expected)",
+                      where);
+  }
   if (src.width <= 0 || src.height <= 0 || src.component < 1 || src.component > 4 ||
       (src.bits != 8 && src.bits != 16))
     return file_error(file, "image was not decoded (width " + std::to_string(src.width) + ", channels " +
@@ -212,9 +227,25 @@ Result<Scene> load_gltf(const std::string& path) {
                          : loader.LoadASCIIFromFile(&model, &err, &warn, path);
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    return file_error(path, std::string("invalid or truncated ") + (binary ? ".glb" : ".gltf") +
-                                " file (missing buffer/image files are reported here too): " + err);
+    if (const size_t at = err.find("File not found : "); at != std::string::npos) {
+      const std::string missing = err.substr(at + 17, err.find('\n', at) - at - 17);
+      return file_error(path, "buffer file '" + shortened(missing) + "' is missing (looked next to the file)");
+    }
+    if (err.find("cannot decode image") != std::string::npos)
+      return file_error(path, "an image could not be decoded (PNG or JPEG expected): " + shortened(err, 200));
+    return file_error(path, std::string("invalid or truncated ") + (binary ? ".glb" : ".gltf") + " file: " +
+                                shortened(err, 300));
   }
+  // A required extension we do not implement changes what the data means (Draco-compressed
+  // geometry has no plain accessors): refuse the file rather than render garbage.
+  for (const std::string& ext : model.extensionsRequired)
+    if (std::find(std::begin(kSupportedRequiredExtensions), std::end(kSupportedRequiredExtensions), ext) ==
+        std::end(kSupportedRequiredExtensions)) {
+      std::string supported;
+      for (const char* s : kSupportedRequiredExtensions) supported += (supported.empty() ? "" : ", ") + std::string(s);
+      return file_error(path, "requires the glTF extension '" + shortened(ext) + "', which Penumbra does not support "
+                              "(supported: " + supported + ")");
+    }
 
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
@@ -244,15 +275,27 @@ Result<Scene> load_gltf(const std::string& path) {
   }
   if (scene.meshes.empty()) return file_error(path, "file contains no meshes");
 
-  // Flatten the node hierarchy. A depth cap guards against cyclic children in hostile files.
+  // Flatten the node hierarchy. A depth cap guards against cyclic children in hostile files, a
+  // visit cap against children shared along many paths (a DAG of 41 nodes can expand to 2^40).
+  size_t visits = 0;
   std::function<Status(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent,
                                                                 int depth) -> Status {
     if (ni < 0 || static_cast<size_t>(ni) >= model.nodes.size())
       return file_error(path, "node index " + std::to_string(ni) + " does not exist");
-    if (depth > 256) return file_error(path, "node hierarchy deeper than 256 levels (cycle?)",
-                                       "node " + std::to_string(ni));
+    if (depth > kMaxNodeDepth)
+      return file_error(path, "node hierarchy deeper than " + std::to_string(kMaxNodeDepth) + " levels (cycle?)",
+                        "node " + std::to_string(ni));
+    if (++visits > kMaxNodeVisits || scene.instances.size() > kMaxInstances)
+      return file_error(path, "the node hierarchy expands to more than " + std::to_string(kMaxInstances) +
+                                  " mesh instances or " + std::to_string(kMaxNodeVisits) +
+                                  " node visits (nodes that share children multiply)", "node " + std::to_string(ni));
     const tinygltf::Node& node = model.nodes[static_cast<size_t>(ni)];
     const glm::mat4 world = parent * local_transform(node);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite(world[c][r]))
+          return file_error(path, "transform is not finite (NaN or infinity)",
+                            "node " + std::to_string(ni) + " '" + shortened(node.name) + "'");
     if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < model.meshes.size())
       for (size_t k = 0; k < count[static_cast<size_t>(node.mesh)]; ++k)
         scene.instances.push_back({static_cast<uint32_t>(first[static_cast<size_t>(node.mesh)] + k), world});
@@ -277,6 +320,11 @@ Result<Scene> load_gltf(const std::string& path) {
   if (scene.instances.empty()) return file_error(path, "the default scene places no meshes (no node refers to a mesh)");
 
   scene.bounds = compute_bounds(scene);
+  const double original_radius = 0.5 * glm::length(glm::dvec3(scene.bounds.max) - glm::dvec3(scene.bounds.min));
+  if (const float s = fit_scene_scale(scene); s != 1.0f)
+    spdlog::warn("{}: the scene's bounding sphere has radius {:g} world units, outside [{:g}, {:g}]; "
+                 "rendering it scaled by {:g} (radius {:g})", path, original_radius, kMinSceneRadius,
+                 kMaxSceneRadius, s, scene.bounds.radius());
   scene.camera = frame_bounds(scene.bounds);
   scene.light = directional_light_for(scene.bounds, glm::vec3(-0.35f, -1.0f, -0.45f), 0.04f);
   return scene;

@@ -3,7 +3,10 @@
 // Supported: TRIANGLES primitives (indexed or not; u8/u16/u32 indices), POSITION, NORMAL (flat
 // normals are generated when missing), TEXCOORD_0, node hierarchy (matrix or TRS), base colour
 // factor and texture, alpha mode OPAQUE/MASK/BLEND with cutoff, double-sided.
-// Not supported (rejected with an Error): other primitive modes, sparse accessors.
+// Not supported (rejected with an Error): other primitive modes, sparse accessors, any required
+// extension but KHR_lights_punctual (KHR_draco_mesh_compression, ...), non-finite positions or
+// transforms, node hierarchies that expand past the limits below. A missing buffer or image
+// file is an Error naming it.
 // KHR_lights_punctual: every directional, spot and point light a node of the default scene
 // places becomes a SceneLight (Scene::lights) with the node's world position and direction
 // (glTF lights shine down the node's local -Z), colour, intensity (copied as is: lux for
@@ -14,12 +17,19 @@
 //
 //   Result<Scene> s = load_gltf("assets/Fox/Fox.gltf");
 //   if (!s) { spdlog::error("{}", s.error().to_string()); return s.error().exit_code(); }
+#include <cstddef>
 #include <string>
 
 #include "scene/scene.h"
 #include "util/error.h"
 
 namespace penumbra::scene {
+
+// Limits of a scene graph (docs/robustness.md): depth, node visits while flattening (children
+// shared by several parents are visited once per path), mesh instances placed.
+inline constexpr int kMaxNodeDepth = 256;
+inline constexpr size_t kMaxNodeVisits = 1000000;
+inline constexpr size_t kMaxInstances = 100000;
 
 // Every Error carries `file` = path; `where` names the mesh/primitive/accessor at fault.
 // The default camera frames the bounds; the default light is a directional light from above at

@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -31,6 +33,21 @@ Camera frame_bounds(const Bounds& bounds, float fov_y) {
   const glm::vec3 eye = center - view_dir * distance;
   return Camera::look_at(eye, center, fov_y, std::max(distance - radius * 1.5f, distance * 0.01f),
                          distance + radius * 1.5f);
+}
+
+float fit_scene_scale(Scene& scene) {
+  // In double: a float length of a 1e30 extent overflows, of a 1e-30 one underflows to 0.
+  const double radius = 0.5 * glm::length(glm::dvec3(scene.bounds.max) - glm::dvec3(scene.bounds.min));
+  if (!(radius > 0.0) || (radius >= kMinSceneRadius && radius <= kMaxSceneRadius)) return 1.0f;
+  const float s = static_cast<float>(kScaledSceneRadius / radius);
+  const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(s));
+  for (Instance& i : scene.instances) i.world = scale * i.world;
+  for (SceneLight& l : scene.lights) {
+    l.light.position *= s;
+    l.range *= s;
+  }
+  scene.bounds = compute_bounds(scene);
+  return s;
 }
 
 }  // namespace penumbra::scene

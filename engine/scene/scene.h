@@ -98,6 +98,13 @@ struct Scene {
 // World-space AABB of every instanced vertex (exact, not a transformed-box approximation).
 Bounds compute_bounds(const Scene& scene);
 
+// Scenes whose bounding sphere is outside [kMinSceneRadius, kMaxSceneRadius] world units are
+// scaled uniformly to kScaledSceneRadius: float depth, bias and the fitted camera and light stop
+// working far outside it (a model in 1e30 units rendered as an empty frame). Returns the factor
+// applied (1 when none was needed); instances, placed lights and `bounds` follow it.
+inline constexpr float kMinSceneRadius = 1e-3f, kMaxSceneRadius = 1e5f, kScaledSceneRadius = 10.0f;
+float fit_scene_scale(Scene& scene);
+
 // A camera framing `bounds` from the front-above (+Z, +Y side), whole box in view.
 Camera frame_bounds(const Bounds& bounds, float fov_y_radians = glm::radians(50.0f));
 

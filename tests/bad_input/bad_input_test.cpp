@@ -66,7 +66,7 @@ TEST_P(BadInput, AnswersAsTheContractSays) {
   else if (command.rfind("penumbra ", 0) == 0) command = std::string(PENUMBRA_CLI) + command.substr(8);
   else FAIL() << "run: must start with penumbra or penumbra-sandbox";
 
-  CommandResult r = run_command("PENUMBRA_LOG=off " + env + "timeout 60 " + command, (dir / "stderr.txt").string());
+  CommandResult r = run_command("PENUMBRA_LOG=warn " + env + "timeout 60 " + command, (dir / "stderr.txt").string());
   EXPECT_EQ(r.signal, 0) << "killed by a signal\n" << command;
   EXPECT_EQ(r.exit_code, c.exit_code) << command << "\nstderr:\n" << r.err.substr(0, 2000);
   for (const std::string& want : c.stderr_contains)
