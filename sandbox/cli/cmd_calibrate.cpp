@@ -9,6 +9,7 @@
 #include "cli/calibration.h"
 #include "cli/command.h"
 #include "cli/context_option.h"
+#include "cli/plugin_option.h"
 #include "cli/eval_capture.h"
 #include "cli/reference_frame.h"
 #include "cli/scene_option.h"
@@ -39,6 +40,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"set", true, true, "k=v", "set a parameter of the technique (and the reference) that has it"},
     {"no-cache", false, false, "", "render the references even when cached ones match"},
     context_option_spec(),
+    plugin_dir_option_spec(),
 };
 
 // Frames rendered before the mask is read: the first compiles shaders, none is timed.
@@ -159,7 +161,7 @@ int cmd_calibrate(const std::vector<std::string>& argv) {
   auto args = parse_args(argv, kSpecs);
   if (!args) return fail(args.error());
   plugin::TechniqueRegistry registry;
-  register_builtin_techniques(registry);
+  if (Status s = register_all_techniques(registry, args->all("plugin-dir")); !s) return fail(s.error());
   auto options = parse_options(*args, registry);
   if (!options) return fail(options.error());
   const CalibrateOptions& o = *options;

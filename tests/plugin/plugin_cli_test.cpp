@@ -1,5 +1,5 @@
 // --plugin-dir DIR and PENUMBRA_PLUGIN_PATH on every command that takes techniques (techniques,
-// render, eval, bench, graph) and on penumbra-sandbox: the template plugin is listed, rendered,
+// render, eval, calibrate, bench, graph) and on penumbra-sandbox: the template plugin is listed, rendered,
 // evaluated, timed, compiled and shown; a plugin of another ABI version is refused by each with
 // exit code 2 and a message naming the file and both versions.
 #include <gtest/gtest.h>
@@ -120,6 +120,7 @@ TEST(PluginCli, EveryCommandRefusesAnotherAbiVersion) {
       std::string(PENUMBRA_CLI) + " render --context osmesa --scene ball --size 32x32 --out /dev/null",
       std::string(PENUMBRA_CLI) + " eval --context osmesa --scene ball --techniques hard --size 32x32",
       std::string(PENUMBRA_CLI) + " bench --context osmesa --techniques hard --size 32x32 --frames 1",
+      std::string(PENUMBRA_CLI) + " calibrate --context osmesa --technique hard --scenes ball --size 32x32",
       std::string(PENUMBRA_CLI) + " graph --pass-types",
   };
 #ifdef PENUMBRA_SANDBOX
