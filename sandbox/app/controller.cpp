@@ -8,6 +8,7 @@
 #include "app/preset.h"
 #include "util/file_read.h"
 #include "plugin/frame_graph.h"
+#include "scene/ground_plane.h"
 #include "scene/load_scene.h"
 #include "gl/debug_output.h"
 #include "util/png.h"
@@ -53,12 +54,48 @@ Status SandboxController::init(const std::string& scene, const std::string& tech
 // --- scene, camera, light ---------------------------------------------------------------------
 
 Status SandboxController::load_scene(const std::string& name_or_path) {
+  scene::StagingOptions staging = staging_;
+  if (!scene_name_.empty() && name_or_path != scene_name_) {
+    staging.camera = {};
+    staging.light_direction.reset();
+    staging.light_size.reset();
+  }
+  staging.aspect = height_ > 0 ? static_cast<float>(width_) / static_cast<float>(height_) : staging.aspect;
   Result<scene::Scene> loaded = scene::load_scene(name_or_path);
   if (!loaded) return note(loaded.error());
+  if (Status s = scene::stage_scene(*loaded, staging); !s) return note(s);
   primary_->set_scene(*loaded);
   if (secondary_) secondary_->set_scene(*loaded);
   scene_name_ = name_or_path;
+  staging_ = staging;
   return note({});
+}
+
+Status SandboxController::set_ground(bool on) {
+  const bool was = staging_.ground;
+  staging_.ground = on;
+  if (scene_name_.empty()) return note({});
+  Status s = load_scene(scene_name_);
+  if (!s) staging_.ground = was;
+  return s;
+}
+
+Status SandboxController::set_camera_choice(const scene::CameraChoice& choice) {
+  const scene::CameraChoice was = staging_.camera;
+  staging_.camera = choice;
+  if (scene_name_.empty()) return note({});
+  Status s = load_scene(scene_name_);
+  if (!s) staging_.camera = was;
+  return s;
+}
+
+const std::vector<scene::SceneCamera>& SandboxController::file_cameras() const {
+  static const std::vector<scene::SceneCamera> kNone;
+  return primary_->has_scene() ? primary_->scene().cameras : kNone;
+}
+
+bool SandboxController::ground_added() const {
+  return primary_->has_scene() && scene::has_added_ground_plane(primary_->scene());
 }
 
 void SandboxController::move_camera(const glm::vec3& axes, float dt, bool fast) {

@@ -28,6 +28,7 @@
 #include "metrics/mask_metrics.h"
 #include "plugin/technique.h"
 #include "plugin/technique_session.h"
+#include "scene/staging.h"
 
 namespace penumbra::sandbox {
 
@@ -51,9 +52,25 @@ class SandboxController {
   Status init(const std::string& scene, const std::string& technique, int width, int height);
 
   // --- scene, camera, light ---------------------------------------------------------------
-  // A built-in name or a glTF path. On failure the previous scene stays.
+  // A built-in name or a glTF path, staged (scene/staging.h) for the frame's aspect: a glTF model
+  // gets a fitted camera, its own light or one that shows the shadows, and a ground plane when it
+  // has no floor and the ground switch is on. A different scene than the current one drops the
+  // camera pose and light overrides of the staging options (they were meant for the previous
+  // one); the ground switch stays. On failure the previous scene stays.
   Status load_scene(const std::string& name_or_path);
   const std::string& scene_name() const { return scene_name_; }
+  // The staging options the next load uses (the command line's --camera, --light-dir,
+  // --light-size, --ground); set before init().
+  void set_staging(const scene::StagingOptions& options) { staging_ = options; }
+  const scene::StagingOptions& staging() const { return staging_; }
+  // The ground switch: reloads the current scene with or without the added plane.
+  Status set_ground(bool on);
+  // Fitted camera, or one the glTF file places (Kind::file, by index or name): reloads and
+  // restages the current scene with that camera.
+  Status set_camera_choice(const scene::CameraChoice& choice);
+  // Cameras the current glTF places (empty for built-in scenes).
+  const std::vector<scene::SceneCamera>& file_cameras() const;
+  bool ground_added() const;
   scene::Camera& camera() { return primary_->camera(); }
   scene::Light& light() { return primary_->light(); }
   // Free-fly camera: `axes` = (right, up, forward) in [-1, 1], dt in seconds; fast = Shift.
@@ -129,6 +146,7 @@ class SandboxController {
   std::unique_ptr<plugin::TechniqueSession> primary_;
   std::unique_ptr<plugin::TechniqueSession> secondary_;
   std::string scene_name_;
+  scene::StagingOptions staging_;
   DisplayPass display_;
   ViewerSettings viewer_;
   CompareState compare_;

@@ -77,6 +77,7 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
   if (!context) return fail(context.error());
 
   SandboxController controller(registry, library);
+  controller.set_staging(o.staging);
   if (o.shadow_size)
     if (Status s = controller.session().set_shadow_size(*o.shadow_size); !s) return fail(s.error());
   if (Status s = controller.init(o.scene, o.technique, o.width, o.height); !s) return fail(s.error());

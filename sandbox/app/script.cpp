@@ -27,7 +27,7 @@ constexpr StepName kSteps[] = {
     {"shadow_size", StepKind::shadow_size}, {"wait", StepKind::wait},
     {"screenshot", StepKind::screenshot}, {"compare", StepKind::compare},
     {"view", StepKind::view},         {"resize", StepKind::resize},
-    {"expect_no_gl_error", StepKind::expect_no_gl_error},
+    {"expect_no_gl_error", StepKind::expect_no_gl_error}, {"ground", StepKind::ground},
 };
 
 std::string valid_step_names() {
@@ -131,7 +131,18 @@ void parse_body(ScriptStep& s, const json& v) {
     case StepKind::expect_no_gl_error:
       if (!v.is_boolean() || !v.get<bool>()) problem("expect_no_gl_error must be true, got " + echo(v));
       break;
+    case StepKind::ground:
+      if (!v.is_boolean()) problem("ground must be true or false, got " + echo(v));
+      s.flag = v.get<bool>();
+      break;
     case StepKind::camera:
+      if (v.is_string()) {
+        const std::string c = v.get<std::string>();
+        if (c != "fit" && c != "file" && c.rfind("file:", 0) != 0)
+          problem("camera must be \"fit\", \"file\", \"file:NAME\" or an object, got " + echo(v));
+        s.camera.choice = c;
+        break;
+      }
       only_keys(v, {"position", "look_at", "yaw", "pitch"}, "camera");
       if (v.empty()) problem("camera: give at least one of position, look_at, yaw, pitch");
       if (v.contains("position")) s.camera.position = need_vec3(v["position"], "camera.position");

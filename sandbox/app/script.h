@@ -24,11 +24,14 @@ namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error
+  resize, expect_no_gl_error, ground
 };
 const char* step_kind_name(StepKind kind);
 
 struct CameraStep {
+  // {"camera": "fit"} / {"camera": "file"} / {"camera": "file:NAME"}: restage the scene with the
+  // fitted camera or one the glTF places (the other fields are then unset).
+  std::optional<std::string> choice;
   std::optional<glm::vec3> position;
   std::optional<glm::vec3> look_at;  // world point; overrides yaw/pitch
   std::optional<float> yaw_deg, pitch_deg;
@@ -62,6 +65,7 @@ struct ScriptStep {
   std::string text;  // scene, technique, screenshot path, reset target ("all" or a parameter)
   std::vector<std::pair<std::string, std::string>> assignments;  // set: name -> value text
   int number = 0;    // wait frames, shadow size (texels)
+  bool flag = false;  // ground: the switch
   int width = 0, height = 0;  // resize (pixels)
   CameraStep camera;
   LightStep light;

@@ -44,7 +44,14 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
         if (Status s = c.set_param(name, value); !s) return s;
       return {};
     case StepKind::reset: return c.reset_param(step.text);
+    case StepKind::ground: return c.set_ground(step.flag);
     case StepKind::camera:
+      if (step.camera.choice) {
+        scene::CameraChoice choice;
+        choice.kind = *step.camera.choice == "fit" ? scene::CameraChoice::Kind::fitted : scene::CameraChoice::Kind::file;
+        if (step.camera.choice->size() > 5) choice.file_camera = step.camera.choice->substr(5);
+        return c.set_camera_choice(choice);
+      }
       return c.set_camera(step.camera.position, step.camera.look_at, step.camera.yaw_deg,
                           step.camera.pitch_deg);
     case StepKind::light:

@@ -86,6 +86,29 @@ void scene_panel(SandboxController& c, UiState& ui) {
   ImGui::SameLine();
   if (ImGui::Button("open")) (void)c.load_scene(ui.scene_path);
   tooltip("load a .gltf/.glb file; on failure the current scene stays");
+  bool ground = c.staging().ground;
+  if (ImGui::Checkbox("ground plane", &ground)) (void)c.set_ground(ground);
+  tooltip(c.ground_added() ? "a plane was added under the model (it has no floor of its own); reloads the scene"
+                           : "adds a plane under models that have no floor of their own (reloads the scene); "
+                             "this scene has its own or the switch is off");
+  const auto& cams = c.file_cameras();
+  const scene::CameraChoice& choice = c.staging().camera;
+  std::string current = choice.kind == scene::CameraChoice::Kind::scene ? "default" : "fitted to the model";
+  if (choice.kind == scene::CameraChoice::Kind::file)
+    current = "file: " + (choice.file_camera.empty() ? std::string("0") : choice.file_camera);
+  if (ImGui::BeginCombo("view", current.c_str())) {
+    if (ImGui::Selectable("fitted to the model", choice.kind != scene::CameraChoice::Kind::file))
+      (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::fitted});
+    for (size_t i = 0; i < cams.size(); ++i) {
+      const std::string label = "file: " + std::to_string(i) + (cams[i].name.empty() ? "" : " " + cams[i].name);
+      if (ImGui::Selectable(label.c_str(), choice.kind == scene::CameraChoice::Kind::file &&
+                                               choice.file_camera == std::to_string(i)))
+        (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::file, .file_camera = std::to_string(i)});
+    }
+    ImGui::EndCombo();
+  }
+  tooltip(cams.empty() ? "the camera fitted to the model's bounds (this scene places no camera of its own)"
+                       : "the camera fitted to the model's bounds, or one the glTF file places");
   const scene::Camera& cam = c.camera();
   ImGui::TextDisabled("camera (%.2f, %.2f, %.2f) yaw %.0f pitch %.0f deg", cam.position.x, cam.position.y,
                       cam.position.z, glm::degrees(cam.yaw), glm::degrees(cam.pitch));
