@@ -1,23 +1,87 @@
-// Receiver-plane depth bias (Isidoro 2006, "Shadow mapping: GPU-based tips and techniques"):
-// the receiver's depth is a plane in shadow-map space, so a filter tap at uv offset `o` is
-// compared against depth + dot(o, dz_duv) instead of the centre depth, which removes acne on
-// slanted receivers without a large constant bias. Compute shaders have no dFdx, so the
-// gradient comes from the neighbouring G-buffer positions (same surface test by normal).
-//
-// Needs: shadow_common.glsl, and a G-buffer position sampler passed in.
-vec2 receiver_plane_gradient(sampler2D positions, ivec2 pixel, vec3 centre_coord, vec3 normal) {
-  ivec2 size = textureSize(positions, 0);
-  ivec2 px = pixel + ivec2(pixel.x + 1 < size.x ? 1 : -1, 0);
-  ivec2 py = pixel + ivec2(0, pixel.y + 1 < size.y ? 1 : -1);
-  vec4 wx = texelFetch(positions, px, 0);
-  vec4 wy = texelFetch(positions, py, 0);
-  if (wx.w <= 0.0 || wy.w <= 0.0) return vec2(0.0);
-  vec3 dx = shadow_coord(wx.xyz) - centre_coord;
-  vec3 dy = shadow_coord(wy.xyz) - centre_coord;
-  // Solve [dx.xy dy.xy] * g = [dx.z dy.z] for g = d(depth)/d(uv).
+// Receiver-plane depth bias (Isidoro 2006, "Shadow mapping: GPU-based tips and techniques"), the
+// one implementation every filtering technique uses (pcf, pcss, pmchss, sspcss, mpg): a
+// receiver's depth is a plane in shadow-map space, so a tap at uv offset `o` is compared against
+// depth + dot(o, dz_duv) instead of the centre depth, which removes acne on slanted receivers
+// without a large constant bias.
+// Needs: shadow_common.glsl included before.
+
+// A receiver pixel in light space: shadow-map coordinate (uv, window depth) and the receiver
+// plane's depth gradient d(window depth)/d(uv) (Isidoro 2006).
+struct Receiver {
+  vec3 coord;
+  vec2 dz_duv;
+};
+
+// Solves [dx.xy dy.xy] g = [dx.z dy.z] for the depth gradient g = d(window depth)/d(uv) of the
+// plane through a receiver and two points beside it (all in shadow-map coordinates). Grazing
+// receivers have an unbounded slope; it is capped (20 window-depth units per UV unit).
+vec2 plane_depth_gradient(vec3 dx, vec3 dy) {
   float det = dx.x * dy.y - dx.y * dy.x;
-  if (abs(det) < 1e-12) return vec2(0.0);
+  if (abs(det) < 1e-14) return vec2(0.0);  // plane seen edge-on by the light
   vec2 g = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
-  // A neighbour on another surface (depth edge) gives a wild gradient: cap it.
   return clamp(g, vec2(-20.0), vec2(20.0));
 }
+
+// A G-buffer neighbour `step` pixels away (tried on both sides) that lies on the receiver's
+// tangent plane, i.e. on the same surface: |n . (q - p)| <= 0.25 |q - p| (about 14 degrees,
+// room for the smooth normal of a tessellated curved surface).
+bool same_surface_neighbour(sampler2D positions, ivec2 pixel, ivec2 step, vec3 world, vec3 n, out vec3 q) {
+  ivec2 size = textureSize(positions, 0);
+  for (int side = 0; side < 2; ++side) {
+    ivec2 t = pixel + (side == 0 ? step : -step);
+    if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;
+    vec4 w = texelFetch(positions, t, 0);
+    vec3 d = w.xyz - world;
+    if (w.w > 0.0 && abs(dot(d, n)) <= 0.25 * length(d) && dot(d, d) > 0.0) {
+      q = w.xyz;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Receiver-plane depth gradient d(window depth)/d(uv) (Isidoro 2006). Compute shaders have no
+// dFdx, so we difference neighbouring G-buffer positions; a neighbour must lie on the same
+// surface (checked against the normal, trying the other side when one is not) so depth edges
+// and the border of the geometry do not produce a wild plane. Where no such neighbour exists (a one-pixel-wide surface) the plane
+// comes from the normal alone: two points a small step along the tangent plane (1e-3 of the
+// light distance; the map is linear, or locally linear for a spot light).
+vec2 receiver_depth_gradient(sampler2D positions, ivec2 pixel, vec3 world, vec3 normal, vec3 c) {
+  vec3 n = normalize(normal);
+  vec3 qx, qy;
+  if (same_surface_neighbour(positions, pixel, ivec2(1, 0), world, n, qx) &&
+      same_surface_neighbour(positions, pixel, ivec2(0, 1), world, n, qy))
+    return plane_depth_gradient(shadow_coord(qx) - c, shadow_coord(qy) - c);
+  vec3 helper = abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 t1 = normalize(cross(n, helper));
+  vec3 t2 = cross(n, t1);
+  float e = 1e-3 * max(light_distance(c.z), 1e-3);  // world units
+  return plane_depth_gradient(shadow_coord(world + e * t1) - c, shadow_coord(world + e * t2) - c);
+}
+
+// False for background pixels and for pixels outside the shadow-map frustum (those are lit).
+// True for a receiver that faces away from the light (visibility 0, shadow_common.glsl).
+bool self_shadowed(sampler2D positions, sampler2D normals, ivec2 pixel) {
+  vec4 pos = texelFetch(positions, pixel, 0);
+  return pos.w > 0.0 && faces_away_from_light(pos.xyz, texelFetch(normals, pixel, 0).xyz);
+}
+
+bool shadow_receiver(sampler2D positions, sampler2D normals, ivec2 pixel, out Receiver r) {
+  vec4 pos = texelFetch(positions, pixel, 0);
+  if (pos.w <= 0.0) return false;
+  r.coord = shadow_coord(pos.xyz);
+  if (any(lessThan(r.coord, vec3(0.0))) || any(greaterThan(r.coord, vec3(1.0)))) return false;
+  vec3 n = texelFetch(normals, pixel, 0).xyz;
+  r.dz_duv = receiver_depth_gradient(positions, pixel, pos.xyz, n, r.coord);
+  return true;
+}
+
+// The receiver's depth extrapolated along its plane to a tap `offset_uv` away (shadow-map UV),
+// minus a constant bias (window depth): what a shadow-map depth at that tap is compared with.
+// The map holds one depth per texel and a tap's bilinear comparison reads texels up to one texel
+// away, so a slanted receiver differs from the stored depth of its own surface by up to
+// |dz/du| + |dz/dv| texels' worth ("fractional texel" error, Isidoro 2006): that is subtracted too.
+float receiver_depth_at(Receiver r, vec2 offset_uv, float bias) {
+  return r.coord.z + dot(offset_uv, r.dz_duv) - (abs(r.dz_duv.x) + abs(r.dz_duv.y)) * u_shadow_texel - bias;
+}
+

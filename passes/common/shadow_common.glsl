@@ -10,6 +10,7 @@ uniform float u_light_frustum_width; // ortho: frustum width in world units; spo
                                      // frustum at distance 1 (2 tan(fov/2))
 uniform vec3 u_light_dir;         // unit, light -> scene
 uniform vec3 u_light_pos;         // emitter centre
+uniform float u_shadow_texel;     // one shadow-map texel in UV (1 / shadow-map size)
 uniform float u_light_emitter_distance; // directional: emitter plane to scene centre, world
                                         // units (scene::emitter_distance); angular diameter
                                         // of the sun-like emitter = size / this

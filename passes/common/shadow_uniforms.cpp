@@ -1,5 +1,7 @@
 #include "passes/common/shadow_uniforms.h"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "exec/gpu_scene.h"
@@ -18,6 +20,7 @@ void set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
   p.set("u_light_frustum_width", width);
   p.set("u_light_dir", frame.light.direction);
   p.set("u_light_pos", frame.light.position);
+  p.set("u_shadow_texel", 1.0f / static_cast<float>(std::max(frame.shadow_size, 1)));
   p.set("u_light_emitter_distance",
         frame.scene ? scene::emitter_distance(frame.light, frame.scene->cpu().bounds) : 1.0f);
 }

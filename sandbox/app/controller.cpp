@@ -5,7 +5,8 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "app/preset.h"
+#include "plugin/preset.h"
+#include "util/file_write.h"
 #include "util/file_read.h"
 #include "plugin/frame_graph.h"
 #include "scene/ground_plane.h"
@@ -208,19 +209,19 @@ Status SandboxController::reset_param(const std::string& name) {
 }
 
 Status SandboxController::save_preset(const std::string& path) const {
-  return write_text_file(path, format_preset(primary_->technique(), primary_->params()));
+  return write_file_whole(path, plugin::format_preset(primary_->technique(), primary_->params()));
 }
 
-Status SandboxController::load_preset(const std::string& path) {
-  Result<std::string> text = read_file_whole(path);
-  if (!text) return note(text.error());
-  Result<Preset> preset = parse_preset(*text, path);
+Status SandboxController::load_preset(const std::string& name_or_path) {
+  const plugin::Technique* technique = registry_.find(primary_->technique());
+  if (!technique) return note(make_error("no technique selected"));
+  Result<plugin::Preset> preset = plugin::load_preset(*technique, name_or_path);
   if (!preset) return note(preset.error());
   // Validate against a copy first: nothing is applied unless everything fits.
-  Result<graph::ParameterSet> next = preset_applied(*preset, primary_->technique(), primary_->params());
+  Result<graph::ParameterSet> next = plugin::preset_applied(*preset, primary_->technique(), primary_->params());
   if (!next) {
     Error e = next.error();
-    e.file = path;
+    e.file = name_or_path;
     return note(e);
   }
   return note(primary_->apply_preset(preset->parameters_json));

@@ -99,7 +99,8 @@ class SandboxController {
   Status set_param_value(const std::string& name, const graph::ParamValue& value);
   Status reset_param(const std::string& name);  // "all" resets every parameter
   Status save_preset(const std::string& path) const;
-  Status load_preset(const std::string& path);
+  // A preset file, or the name of one the technique ships ("paper").
+  Status load_preset(const std::string& name_or_path);
 
   // --- graph debug switches -----------------------------------------------------------------
   Status set_no_reuse(bool on);

@@ -4,7 +4,8 @@
 
 #include "app/controller.h"
 #include "app/options.h"
-#include "app/preset.h"
+#include "plugin/preset.h"
+#include "util/file_write.h"
 #include "app/script.h"
 #include "app/script_runner.h"
 #include "app/window_host.h"
@@ -33,7 +34,7 @@ int write_exhaustive(const plugin::TechniqueRegistry& registry, const SandboxOpt
   if (infos.empty())
     return fail(make_error("no techniques are registered: nothing to write", ErrorKind::internal));
   std::string text = exhaustive_script(infos, o.screenshot_dir, o.width, o.height, o.shadow_size.value_or(512));
-  if (Status s = write_text_file(o.exhaustive_script, text); !s) return fail(s.error());
+  if (Status s = write_file_whole(o.exhaustive_script, text); !s) return fail(s.error());
   std::printf("wrote %s (%zu techniques)\n", o.exhaustive_script.c_str(), infos.size());
   return 0;
 }

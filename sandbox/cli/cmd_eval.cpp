@@ -2,6 +2,7 @@
 // (same scene, camera, light, size), over receiver pixels, plus the technique's GPU time.
 // Everything is computed before anything is written, so bad input or a failure leaves no
 // partial JSON or heat map behind.
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -13,7 +14,10 @@
 #include "cli/context_option.h"
 #include "cli/eval_capture.h"
 #include "cli/eval_report.h"
+#include "cli/flicker_run.h"
 #include "cli/scene_option.h"
+#include "cli/reference_frame.h"
+#include "cli/technique_eval.h"
 #include "cli/technique_spec.h"
 #include "metrics/heat_map.h"
 #include "plugin/frame_graph.h"
@@ -37,7 +41,12 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"frames", true, false, "N", "measured frames per technique for the median time (default 10)"},
     {"json", true, false, "OUT.json", "write the results as JSON"},
     {"heatmaps", true, false, "DIR", "write one error heat-map PNG per technique into DIR"},
+    {"masks", true, false, "DIR", "write each technique's shadow mask and the reference's as grey PNGs into DIR"},
     {"set", true, true, "k=v", "set a parameter of every listed technique (and the reference) that has it"},
+    {"no-cache", false, false, "", "render the reference even when a cached one matches, and do not cache it"},
+    {"flicker", true, false, "pan|light", "also measure temporal stability over a slow camera pan or light motion"},
+    {"flicker-frames", true, false, "N", "frames of the --flicker motion (default 8; each needs a reference)"},
+    {"flicker-step", true, false, "DEG", "--flicker motion per frame, degrees (default 0.25)"},
     context_option_spec(),
 });
 
@@ -54,8 +63,10 @@ struct EvalOptions {
   std::vector<TechniqueSpec> techniques;
   std::string reference = "raytraced";
   int width = 640, height = 360, shadow = 2048, rays = 256, samples = 1024, frames = 10;
-  std::string json, heatmaps;
+  bool use_cache = true;
+  std::string json, heatmaps, masks;
   std::vector<std::string> sets;
+  std::optional<FlickerSettings> flicker;
 };
 
 Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const plugin::TechniqueRegistry& registry) {
@@ -85,8 +96,28 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const plugin::Tec
       if (!n) return n.error();
       *i.value = *n;
     }
+  if (auto m = args.get("flicker")) {
+    if (Status s = check_flicker_motion(*m); !s) return s.error();
+    FlickerSettings f;
+    f.motion = *m;
+    if (auto n = args.get("flicker-frames")) {
+      auto frames = parse_int("flicker-frames", *n, 2, 240);
+      if (!frames) return frames.error();
+      f.frames = *frames;
+    }
+    if (auto d = args.get("flicker-step")) {
+      auto step = parse_real("flicker-step", *d, 0.001, 10.0);
+      if (!step) return step.error();
+      f.degrees_per_frame = static_cast<float>(*step);
+    }
+    o.flicker = f;
+  } else if (args.get("flicker-frames") || args.get("flicker-step")) {
+    return make_error("--flicker-frames and --flicker-step need --flicker pan|light");
+  }
   o.json = args.get("json").value_or("");
   o.heatmaps = args.get("heatmaps").value_or("");
+  o.masks = args.get("masks").value_or("");
+  o.use_cache = !args.has("no-cache");
   o.sets = args.all("set");
   std::vector<std::string> with_reference = technique_names(o.techniques);
   with_reference.push_back("reference");
@@ -94,72 +125,41 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const plugin::Tec
   return o;
 }
 
-// Renders the reference to completion: raster accumulates until all samples are in (progress
-// every ~10%), raytraced traces once (the pass logs its own progress).
-Status render_reference(plugin::TechniqueSession& session, const EvalOptions& o) {
-  if (Status s = session.set_technique("reference"); !s) return s;
-  if (Status s = apply_matching_sets(session, o.sets); !s) return s;
-  for (const std::string& kv : {"method=" + o.reference, "rays=" + std::to_string(o.rays),
-                                "samples=" + std::to_string(o.samples)})
-    if (Status s = session.set_param(kv); !s) return s;
-  const int per_frame = std::max(1, session.params().get_int("maps_per_frame"));
-  const int max_frames = o.reference == "raster" ? (o.samples + per_frame - 1) / per_frame + 2 : 1;
-  int next_report = 1;
-  for (int f = 0; f < max_frames; ++f) {
-    if (Status s = session.render(); !s) return s;
-    const reference::ReferenceProgress p = reference::reference_progress();
-    if (o.reference == "raster" && p.fraction() * 10.0 >= next_report) {
-      std::fprintf(stderr, "reference (raster): %lld/%lld shadow maps\n", static_cast<long long>(p.done),
-                   static_cast<long long>(p.total));
-      next_report = static_cast<int>(p.fraction() * 10.0) + 1;
-    }
-    if (p.complete()) return {};
-  }
-  return make_error("the reference did not complete in " + std::to_string(max_frames) + " frames", ErrorKind::internal);
+// A row label as a file name: "pmchss:variant=regular" -> "pmchss-variant-regular".
+std::string file_label(const std::string& label) {
+  std::string out;
+  for (char c : label) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' ? c : '-';
+  return out;
 }
 
-// Renders one technique (a listed `reference` runs to completion first) and compares its mask.
-Result<EvalRow> evaluate(plugin::TechniqueSession& session, const TechniqueSpec& spec, const EvalOptions& o,
-                         const metrics::MaskImage& reference, const metrics::CoverageMask& coverage,
-                         metrics::MaskImage& mask_out) {
-  if (Status s = select_technique(session, spec, o.sets); !s) return s.error();
-  if (spec.name == "reference") {  // a reference evaluated as a technique runs to completion first
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int f = 0; f < 1 + 65536; ++f) {
-      if (Status s = session.render(); !s) return s.error();
-      if (reference::reference_progress().complete()) break;
-    }
-    std::fprintf(stderr, "technique reference (%s) done in %.2f s\n", session.params().get_enum("method").c_str(),
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
-  if (Status s = render_timed_frames(session, kWarmupFrames, o.frames); !s) return s.error();
-  gl::Texture* mask = session.executor().resource(plugin::kShadowMask);
-  if (!mask) return make_error("technique '" + spec.label + "' wrote no shadow_mask", ErrorKind::internal);
-  mask_out = read_mask_image(*mask);
-  auto errors = metrics::compare_masks(mask_out, reference, coverage);
-  if (!errors) return errors.error();
-  EvalRow row{spec.label, *errors, 0.0};
-  // The technique's own passes: everything but the frame's G-buffer prologue and lighting epilogue.
-  for (const PassMedian& p : pass_medians(session, o.frames))
-    if (p.name != "gbuffer" && p.name != "lighting") row.gpu_ms += p.ms;
-  return row;
+Status create_output_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (!ec) return {};
+  Error e = make_error("cannot create the output directory: " + ec.message());
+  e.file = dir;
+  return e;
 }
 
 Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::vector<metrics::MaskImage>& masks,
                      const metrics::MaskImage& reference, const metrics::CoverageMask& coverage) {
   if (!o.heatmaps.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(o.heatmaps, ec);
-    if (ec) {
-      Error e = make_error("cannot create the heat-map directory: " + ec.message());
-      e.file = o.heatmaps;
-      return e;
-    }
+    if (Status s = create_output_dir(o.heatmaps); !s) return s;
     for (size_t i = 0; i < masks.size(); ++i) {
       auto map = metrics::error_heat_map(masks[i], reference, coverage, kHeatMapScale);
       if (!map) return map.error();
-      const std::string path = o.heatmaps + "/" + report.scene + "_" + report.rows[i].technique + "_error.png";
+      const std::string path = o.heatmaps + "/" + report.scene + "_" + file_label(report.rows[i].technique) + "_error.png";
       if (Status s = metrics::write_png(path, *map); !s) return s;
+      std::printf("wrote %s\n", path.c_str());
+    }
+  }
+  if (!o.masks.empty()) {
+    if (Status s = create_output_dir(o.masks); !s) return s;
+    for (size_t i = 0; i <= masks.size(); ++i) {
+      const bool is_reference = i == masks.size();
+      const std::string path = o.masks + "/" + report.scene + "_" +
+                               (is_reference ? std::string("reference") : file_label(report.rows[i].technique)) + "_mask.png";
+      if (Status s = metrics::write_png(path, is_reference ? reference : masks[i]); !s) return s;
       std::printf("wrote %s\n", path.c_str());
     }
   }
@@ -170,11 +170,34 @@ Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::
   return {};
 }
 
+// Each technique's temporal change over the motion, minus the reference's on the same frames.
+Status measure_flicker(plugin::TechniqueSession& session, const EvalOptions& o, EvalReport& report) {
+  const FlickerSettings& f = *o.flicker;
+  std::fprintf(stderr, "flicker: %d frames of %s, reference...\n", f.frames, f.motion.c_str());
+  auto reference = reference_motion_frames(session, {o.reference, o.rays, o.samples, o.sets, o.use_cache}, f);
+  if (!reference) return reference.error();
+  auto reference_change = metrics::temporal_change(*reference);
+  if (!reference_change) return reference_change.error();
+  report.flicker_motion = f.motion;
+  report.flicker_frames = f.frames;
+  report.flicker_reference = reference_change->mean_abs_change;
+  for (size_t i = 0; i < o.techniques.size(); ++i) {
+    std::fprintf(stderr, "flicker: technique %s...\n", o.techniques[i].label.c_str());
+    auto frames = technique_motion_frames(session, o.techniques[i], o.sets, f);
+    if (!frames) return frames.error();
+    auto change = metrics::temporal_change(*frames);
+    if (!change) return change.error();
+    report.rows[i].temporal_change = change->mean_abs_change;
+    report.rows[i].flicker = change->mean_abs_change - reference_change->mean_abs_change;
+  }
+  return {};
+}
+
 int cmd_eval(const std::vector<std::string>& argv) {
   if (help_requested(argv))
     return print_help("penumbra eval --scene NAME|FILE --techniques a,b,c [--reference raytraced|raster] "
                                     "[--size WxH] [--shadow-size N] [--rays M] [--samples N] [--json OUT.json] "
-                                    "[--heatmaps DIR] [--set k=v]...\n"
+                                    "[--heatmaps DIR] [--masks DIR] [--flicker pan|light] [--set k=v]...\n"
                                     "                     [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]",
                                     "Renders a ground-truth reference once, then each technique on the same frame,\n"
                                     "and compares shadow masks over receiver pixels (RMSE, RMSE in the penumbra\n"
@@ -182,6 +205,9 @@ int cmd_eval(const std::vector<std::string>& argv) {
                                     "of a reference edge) and times the technique's passes (median ms).\n"
                                     "Exact hard reference: --light-size 0 (one ray per pixel sample); add\n"
                                     "--set pixel_samples=4 for the pixel-box-filtered (anti-aliased) one.\n"
+                                    "--flicker pan|light renders a slow motion and reports each technique's mean\n"
+                                    "frame-to-frame change on the same surface points (reprojected with depth,\n"
+                                    "disocclusions left out) minus the reference's: what the technique adds.\n"
                                     "See docs/evaluation.md.",
                                     kSpecs);
   auto args = parse_args(argv, kSpecs);
@@ -200,30 +226,28 @@ int cmd_eval(const std::vector<std::string>& argv) {
   exec::PassLibrary library = make_pass_library(registry);
   plugin::TechniqueSession session(registry, library);
   session.set_scene(*scene);
-  session.compile_options().keep_alive.push_back("gbuffer_position");  // coverage
   if (Status s = session.resize(o.width, o.height); !s) return fail(s.error());
   if (Status s = session.set_shadow_size(o.shadow); !s) return fail(s.error());
 
   std::fprintf(stderr, "reference (%s) on %s at %dx%d...\n", o.reference.c_str(), scene->name.c_str(), o.width, o.height);
   const auto t0 = std::chrono::steady_clock::now();
-  if (Status s = render_reference(session, o); !s) return fail(s.error());
-  std::fprintf(stderr, "reference (%s) done in %.2f s\n", o.reference.c_str(),
+  auto reference = reference_frame(session, {o.reference, o.rays, o.samples, o.sets, o.use_cache});
+  if (!reference) return fail(reference.error());
+  std::fprintf(stderr, "reference (%s) %s in %.2f s\n", o.reference.c_str(),
+               reference->from_cache ? ("read from the cache, " + reference->cache_file).c_str() : "done",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  gl::Texture* ref_mask = session.executor().resource(plugin::kShadowMask);
-  gl::Texture* position = session.executor().resource("gbuffer_position");
-  if (!ref_mask || !position) return fail(make_error("the reference frame lacks shadow_mask or gbuffer_position", ErrorKind::internal));
-  const metrics::MaskImage reference = read_mask_image(*ref_mask);
-  const metrics::CoverageMask coverage = read_coverage(*position);
 
   EvalReport report{scene->name, o.reference, {}};
   std::vector<metrics::MaskImage> masks;
   for (const TechniqueSpec& t : o.techniques) {
     std::fprintf(stderr, "technique %s...\n", t.label.c_str());
-    metrics::MaskImage mask;
-    auto row = evaluate(session, t, o, reference, coverage, mask);
-    if (!row) return fail(row.error());
-    report.rows.push_back(*row);
-    masks.push_back(std::move(mask));
+    auto evaluated = evaluate_technique(session, t, o.sets, *reference, kWarmupFrames, o.frames);
+    if (!evaluated) return fail(evaluated.error());
+    report.rows.push_back(evaluated->row);
+    masks.push_back(std::move(evaluated->mask));
+  }
+  if (o.flicker) {
+    if (Status s = measure_flicker(session, o, report); !s) return fail(s.error());
   }
   std::printf("scene %s, reference %s, %dx%d, %zu receiver pixels (%zu in the reference's penumbra)\n",
               report.scene.c_str(), o.reference.c_str(), o.width, o.height,
@@ -232,7 +256,11 @@ int cmd_eval(const std::vector<std::string>& argv) {
   std::printf("%s", eval_report_table(report).c_str());
   std::printf("ms: median of %d frames of the technique's passes, timed with %s\n", o.frames,
               timing_mode_note(session).c_str());
-  if (Status s = write_outputs(o, report, masks, reference, coverage); !s) return fail(s.error());
+  if (o.flicker)
+    std::printf("flicker: mean |change| of the reprojected mask over a %d-frame %s (%.3g deg/frame), minus the "
+                "reference's (%.5f)\n", o.flicker->frames, o.flicker->motion == "pan" ? "camera pan" : "light motion",
+                o.flicker->degrees_per_frame, report.flicker_reference);
+  if (Status s = write_outputs(o, report, masks, reference->mask, reference->coverage); !s) return fail(s.error());
   return 0;
 }
 

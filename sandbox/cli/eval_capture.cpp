@@ -6,24 +6,43 @@
 
 namespace penumbra::cli {
 
-metrics::MaskImage read_mask_image(const gl::Texture& texture) {
+namespace {
+
+// GL textures hold rows bottom to top; the metrics images rows top to bottom. Calls
+// `store(x, top_down_y, texel)` with a pointer to each texel's channels: the one place the
+// rows are flipped.
+template <class Store>
+void for_each_texel_top_down(const gl::Texture& texture, Store&& store) {
   const std::vector<float> texels = texture.read();
   const int w = texture.width(), h = texture.height(), c = texture.info().channels;
-  metrics::MaskImage img(w, h);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      img.at(x, h - 1 - y) = texels[(static_cast<size_t>(y) * w + x) * c];
+    for (int x = 0; x < w; ++x) store(x, h - 1 - y, &texels[(static_cast<size_t>(y) * w + x) * c], c);
+}
+
+}  // namespace
+
+metrics::MaskImage read_mask_image(const gl::Texture& texture) {
+  metrics::MaskImage img(texture.width(), texture.height());
+  for_each_texel_top_down(texture, [&](int x, int y, const float* t, int) { img.at(x, y) = t[0]; });
   return img;
 }
 
 metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_position) {
-  const std::vector<float> texels = gbuffer_position.read();
-  const int w = gbuffer_position.width(), h = gbuffer_position.height(), c = gbuffer_position.info().channels;
-  metrics::CoverageMask coverage(static_cast<size_t>(w) * h, 0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      coverage[static_cast<size_t>(h - 1 - y) * w + x] = texels[(static_cast<size_t>(y) * w + x) * c + (c - 1)] > 0.0f;
+  const int w = gbuffer_position.width();
+  metrics::CoverageMask coverage(static_cast<size_t>(w) * gbuffer_position.height(), 0);
+  for_each_texel_top_down(gbuffer_position, [&](int x, int y, const float* t, int c) {
+    coverage[static_cast<size_t>(y) * w + x] = t[c - 1] > 0.0f;
+  });
   return coverage;
+}
+
+std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_position) {
+  const int w = gbuffer_position.width();
+  std::vector<glm::vec4> out(static_cast<size_t>(w) * gbuffer_position.height(), glm::vec4(0.0f));
+  for_each_texel_top_down(gbuffer_position, [&](int x, int y, const float* t, int c) {
+    if (c == 4) out[static_cast<size_t>(y) * w + x] = glm::vec4(t[0], t[1], t[2], t[3]);
+  });
+  return out;
 }
 
 Status render_timed_frames(plugin::TechniqueSession& session, int warmup, int frames) {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "metrics/mask_image.h"
 #include "plugin/technique_session.h"
 #include "util/error.h"
@@ -15,6 +17,8 @@ namespace penumbra::cli {
 metrics::MaskImage read_mask_image(const gl::Texture& texture);
 // Receiver pixels: gbuffer_position.w > 0 (the frame contract), rows top to bottom.
 metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_position);
+// World positions (w > 0 on receivers), rows top to bottom.
+std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_position);
 
 // Renders `warmup` frames, then `frames` measured frames (plus the timer's read-back latency
 // when timings come from GPU timestamp queries, so the measured frames are the last ones read).

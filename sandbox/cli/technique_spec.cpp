@@ -1,6 +1,7 @@
 #include "cli/technique_spec.h"
 
 #include "cli/eval_capture.h"
+#include "plugin/preset.h"
 
 namespace penumbra::cli {
 
@@ -26,7 +27,8 @@ Result<std::vector<TechniqueSpec>> parse_technique_specs(const std::string& opti
   std::vector<TechniqueSpec> specs;
   for (const std::string& item : *items) {
     std::vector<std::string> parts = split(item, ':');
-    TechniqueSpec spec{parts[0], {parts.begin() + 1, parts.end()}, item};
+    const size_t at = parts[0].find('@');
+    TechniqueSpec spec{parts[0].substr(0, at), {parts.begin() + 1, parts.end()}, item};
     const plugin::Technique* technique = registry.find(spec.name);
     if (!technique) {
       std::string valid;
@@ -36,6 +38,14 @@ Result<std::vector<TechniqueSpec>> parse_technique_specs(const std::string& opti
     auto graph = plugin::load_technique_graph(*technique);
     if (!graph) return graph.error();
     graph::ParameterSet params(graph->parameters);
+    if (at != std::string::npos) {
+      auto preset = plugin::load_preset(*technique, parts[0].substr(at + 1));
+      if (!preset) return make_error("--" + option + " item '" + shortened(item) + "': " + preset.error().message);
+      auto applied = plugin::preset_applied(*preset, spec.name, params);
+      if (!applied) return make_error("--" + option + " item '" + shortened(item) + "': " + applied.error().message);
+      params = std::move(*applied);
+      spec.preset_json = preset->parameters_json;
+    }
     for (const std::string& kv : spec.sets)
       if (Status s = params.set_from_string(kv); !s)
         return make_error("--" + option + " item '" + shortened(item) + "': " + s.error().message);
@@ -53,6 +63,8 @@ std::vector<std::string> technique_names(const std::vector<TechniqueSpec>& specs
 Status select_technique(plugin::TechniqueSession& session, const TechniqueSpec& spec,
                         const std::vector<std::string>& global_sets) {
   if (Status s = session.set_technique(spec.name); !s) return s;
+  if (!spec.preset_json.empty())
+    if (Status s = session.apply_preset(spec.preset_json); !s) return s;
   if (Status s = apply_matching_sets(session, global_sets); !s) return s;
   for (const std::string& kv : spec.sets)
     if (Status s = session.set_param(kv); !s) {

@@ -7,6 +7,7 @@ find_package(spdlog CONFIG REQUIRED)
 find_package(nlohmann_json CONFIG REQUIRED)
 find_package(Threads REQUIRED)
 find_package(embree 3 CONFIG REQUIRED)
+find_package(NLopt CONFIG REQUIRED)  # penumbra calibrate: Nelder-Mead
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 # OSMesa and EGL are dlopen'ed at run time; only their headers are needed at build time.

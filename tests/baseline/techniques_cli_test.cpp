@@ -13,28 +13,13 @@
 #include <string>
 
 #include "plugin/technique.h"
+#include "support/cli_run.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::test {
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun r;
-  const std::string cmd = std::string(PENUMBRA_CLI) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+CliRun run_cli(const std::string& args) { return test::run_cli(PENUMBRA_CLI, args); }
 
 TEST(TechniquesCommand, JsonListsEveryParameterOfEveryTechnique) {
   CliRun r = run_cli("techniques --json");

@@ -6,6 +6,7 @@
 // and review the diff like code.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,7 @@
 #include "graph/compiler.h"
 #include "graph/graph_json.h"
 #include "plugin/frame_graph.h"
+#include "plugin/preset.h"
 #include "plugin/technique_session.h"
 #include "techniques/_template/template_technique.h"
 #include "techniques/builtin_techniques.h"
@@ -134,6 +136,47 @@ TEST_P(DocumentedExample, PlanMatchesGoldenDump) {
 
 INSTANTIATE_TEST_SUITE_P(Docs, DocumentedExample,
                          ::testing::Values("pcss_blur", "penumbra_variants", "progressive_reference"));
+
+// Every paper technique ships its paper's constants as the `paper` preset, and each shipped
+// preset fits its technique's parameters and compiles.
+TEST(ShippedPresets, PaperPresetsApplyToTheirTechniquesAndCompile) {
+  const plugin::TechniqueRegistry& registry = techniques().registry;
+  for (const char* name : {"pcss", "pmchss", "mpg", "sspcss", "esm"}) {
+    const plugin::Technique* technique = registry.find(name);
+    ASSERT_NE(technique, nullptr) << name;
+    std::vector<std::string> shipped = plugin::shipped_presets(*technique);
+    EXPECT_NE(std::find(shipped.begin(), shipped.end(), "paper"), shipped.end()) << name;
+    auto desc = plugin::load_technique_graph(*technique);
+    ASSERT_TRUE(desc) << desc.error().to_string();
+    for (const std::string& preset_name : shipped) {
+      auto preset = plugin::load_preset(*technique, preset_name);
+      ASSERT_TRUE(preset) << preset.error().to_string();
+      graph::ParameterSet defaults(desc->parameters);
+      auto applied = plugin::preset_applied(*preset, name, defaults);
+      ASSERT_TRUE(applied) << name << "@" << preset_name << ": " << applied.error().to_string();
+      // PCSS is physically driven in the paper already (Fernando 2005): its defaults are its paper.
+      if (std::string(name) != "pcss")
+        EXPECT_NE(applied->to_json(), defaults.to_json()) << name << "@" << preset_name << " is the defaults";
+      auto frame = plugin::compose_frame_graph(*desc);
+      ASSERT_TRUE(frame) << frame.error().to_string();
+      auto plan = graph::compile(*frame, techniques().library.declarations(), *applied, {1920, 1080, 2048});
+      EXPECT_TRUE(plan) << name << "@" << preset_name;
+    }
+  }
+}
+
+TEST(ShippedPresets, UnknownPresetNamesTheShippedOnes) {
+  const plugin::Technique* pmchss = techniques().registry.find("pmchss");
+  ASSERT_NE(pmchss, nullptr);
+  auto missing = plugin::load_preset(*pmchss, "papr");
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().message.find("shipped: paper"), std::string::npos) << missing.error().message;
+  const plugin::Technique* hard = techniques().registry.find("hard");
+  ASSERT_NE(hard, nullptr);
+  auto none = plugin::load_preset(*hard, "paper");
+  ASSERT_FALSE(none);
+  EXPECT_NE(none.error().message.find("ships none"), std::string::npos) << none.error().message;
+}
 
 INSTANTIATE_TEST_SUITE_P(Shipped, TechniquePlan,
                          ::testing::Values("hard", "pcf", "pcss", "pmchss", "reference", "sspcss", "template", "esm", "mpg"));

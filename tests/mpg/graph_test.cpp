@@ -14,6 +14,7 @@
 #include "mpg_rig.h"
 #include "mpg_settings.h"
 #include "plugin/technique.h"
+#include "support/cli_run.h"
 #include "techniques/builtin_techniques.h"
 
 using namespace penumbra;
@@ -29,22 +30,8 @@ bool has_pass(const graph::CompiledPlan& plan, const std::string& name) {
   return std::any_of(plan.passes.begin(), plan.passes.end(), [&](const graph::PlannedPass& p) { return p.name == name; });
 }
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun r;
-  FILE* pipe = popen((std::string(PENUMBRA_CLI) + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using penumbra::test::CliRun;
+CliRun run_cli(const std::string& args) { return penumbra::test::run_cli(PENUMBRA_CLI, args); }
 
 }  // namespace
 

@@ -21,11 +21,11 @@ struct EvalRun {
   std::string err;
 };
 
-EvalRun run_eval(const std::string& args) {
+EvalRun run_eval(const std::string& args, const std::string& env = "") {
   const fs::path dir = fs::temp_directory_path() / ("penumbra_eval_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path err = dir / "stderr.txt";
-  const std::string cmd = std::string(PENUMBRA_CLI) + " eval --context osmesa " + args + " >/dev/null 2>" + err.string();
+  const std::string cmd = env + std::string(PENUMBRA_CLI) + " eval --context osmesa " + args + " >/dev/null 2>" + err.string();
   const int status = std::system(cmd.c_str());
   EvalRun r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -85,6 +85,78 @@ TEST(EvalCli, LightSizeZeroGivesTheExactHardReference) {
   EXPECT_GT(row["edge_error"].get<double>(), 0.0);  // a 64^2 map's staircase along the edges
   EXPECT_EQ(row["rmse_penumbra"].get<double>(), 0.0);  // a hard reference has no penumbra pixels
   EXPECT_EQ(run_eval("--scene ball --techniques hard --light-size -1").code, 2);
+}
+
+// The reference is cached on disk by everything that decides it: a second eval of the same frame
+// reads it (same numbers), another light size misses, --no-cache renders again.
+TEST(EvalCli, ReferenceIsCachedByFrameAndSettings) {
+  const fs::path d = out_dir();
+  const std::string cache = "PENUMBRA_CACHE_DIR=" + (d / "cache").string() + " ";
+  const std::string args = "--scene ball --techniques pcss --size 64x48 --rays 16 --frames 1";
+  auto eval_with_cache = [&](const std::string& extra, const fs::path& json) {
+    EvalRun r = run_eval(args + " " + extra + " --json " + json.string(), cache);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return r;
+  };
+  EvalRun first = eval_with_cache("", d / "a.json");
+  EXPECT_EQ(first.err.find("read from the cache"), std::string::npos) << first.err;
+  EvalRun second = eval_with_cache("", d / "b.json");
+  EXPECT_NE(second.err.find("read from the cache"), std::string::npos) << second.err;
+  const nlohmann::json a = nlohmann::json::parse(std::ifstream(d / "a.json"));
+  const nlohmann::json b = nlohmann::json::parse(std::ifstream(d / "b.json"));
+  EXPECT_EQ(a["rows"][0]["rmse"], b["rows"][0]["rmse"]);
+  EvalRun other_light = eval_with_cache("--light-size 0.2", d / "c.json");
+  EXPECT_EQ(other_light.err.find("read from the cache"), std::string::npos) << other_light.err;
+  EvalRun forced = eval_with_cache("--no-cache", d / "e.json");
+  EXPECT_EQ(forced.err.find("read from the cache"), std::string::npos) << forced.err;
+}
+
+// Items of --techniques carry settings of their own; rows are labelled by them.
+TEST(EvalCli, TechniquesWithTheirOwnSettingsAreRowsOfTheirOwn) {
+  const fs::path d = out_dir();
+  const fs::path json = d / "variants.json";
+  EvalRun r = run_eval("--scene ball --size 64x48 --rays 16 --frames 1 --json " + json.string() +
+                       " --techniques pcf:kernel=box:box_size=3,pcf:kernel=vogel:radius=6");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
+  ASSERT_EQ(j["rows"].size(), 2u);
+  EXPECT_EQ(j["rows"][0]["technique"], "pcf:kernel=box:box_size=3");
+  EXPECT_EQ(j["rows"][1]["technique"], "pcf:kernel=vogel:radius=6");
+  EXPECT_NE(j["rows"][0]["rmse"], j["rows"][1]["rmse"]);  // the settings reached the technique
+  EvalRun bad = run_eval("--scene ball --techniques pcf:box_size=99");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("pcf:box_size=99"), std::string::npos) << bad.err;
+}
+
+// --flicker: each row's temporal change over the motion and its excess over the reference's.
+TEST(EvalCli, FlickerIsTheTemporalChangeAboveTheReferences) {
+  const fs::path d = out_dir();
+  auto flicker = [&](const std::string& step, const std::string& name) {
+    const fs::path json = d / name;
+    EvalRun r = run_eval("--scene ball --size 64x48 --rays 16 --frames 1 --techniques hard,pcss --flicker pan "
+                         "--flicker-frames 3 --flicker-step " + step + " --json " + json.string());
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(std::ifstream(json));
+  };
+  const nlohmann::json moving = flicker("2", "moving.json");
+  EXPECT_EQ(moving["flicker_motion"], "pan");
+  EXPECT_EQ(moving["flicker_frames"], 3);
+  const double reference = moving["flicker_reference"];
+  EXPECT_GE(reference, 0.0);
+  for (const auto& row : moving["rows"]) {
+    const double change = row["temporal_change"];
+    EXPECT_GT(change, 0.0) << row["technique"];  // a 2-degree pan moves 64x48 pixels over every edge
+    EXPECT_NEAR(row["flicker"].get<double>(), change - reference, 1e-9);
+  }
+  // Barely moving, the same surface points keep their values: no change for anyone.
+  const nlohmann::json still = flicker("0.001", "still.json");
+  EXPECT_LT(still["flicker_reference"].get<double>(), 0.005);
+  for (const auto& row : still["rows"]) EXPECT_LT(row["temporal_change"].get<double>(), 0.005) << row["technique"];
+  for (const char* bad : {"--flicker wiggle", "--flicker-frames 4", "--flicker pan --flicker-frames 1"}) {
+    EvalRun r = run_eval(std::string("--scene ball --techniques hard ") + bad);
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("flicker"), std::string::npos) << r.err;
+  }
 }
 
 TEST(EvalCli, BadInputExitsTwoWithoutFiles) {

@@ -6,7 +6,8 @@
 #include <filesystem>
 
 #include "app/controller.h"
-#include "app/preset.h"
+#include "plugin/preset.h"
+#include "util/file_write.h"
 #include "image_stats.h"
 #include "support/test_context.h"
 #include "techniques/builtin_techniques.h"
@@ -97,10 +98,10 @@ TEST_F(Fixture, PresetRoundTripThroughFiles) {
   // Another technique's preset and a preset with an unknown key apply nothing.
   ASSERT_TRUE(controller->reset_param("all"));
   const std::string defaults = controller->session().params().to_json();
-  ASSERT_TRUE(write_text_file(path, R"({"technique": "pcss", "parameters": {"lit_level": 0.1}})"));
+  ASSERT_TRUE(write_file_whole(path, R"({"technique": "pcss", "parameters": {"lit_level": 0.1}})"));
   EXPECT_FALSE(controller->load_preset(path));
   EXPECT_NE(controller->message().find("pcss"), std::string::npos);
-  ASSERT_TRUE(write_text_file(path, R"({"technique": "sandbox_tiny", "parameters": {"lit_level": 0.1, "x": 1}})"));
+  ASSERT_TRUE(write_file_whole(path, R"({"technique": "sandbox_tiny", "parameters": {"lit_level": 0.1, "x": 1}})"));
   EXPECT_FALSE(controller->load_preset(path));
   EXPECT_EQ(controller->session().params().to_json(), defaults);
   std::filesystem::remove(path);

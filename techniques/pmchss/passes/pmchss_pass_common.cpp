@@ -32,7 +32,6 @@ void set_pmchss_uniforms(const gl::Program& p, exec::PassContext& ctx) {
   p.set("u_penumbra_k", ctx.real("k"));
   p.set("u_depth_bias", ctx.real("depth_bias"));
   p.set("u_receiver_plane", ctx.boolean("receiver_plane_bias") ? 1 : 0);
-  p.set("u_shadow_texel", 1.0f / static_cast<float>(std::max(ctx.frame().shadow_size, 1)));
 }
 
 std::pair<std::string, std::string> mapping_define(exec::PassContext& ctx) {

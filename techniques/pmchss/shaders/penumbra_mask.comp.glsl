@@ -23,6 +23,7 @@ layout(local_size_x = REGION, local_size_y = REGION) in;
 #include "shadow_common.glsl"
 #include "noise.glsl"
 #include "receiver_plane.glsl"
+#define PENUMBRA_MASK_SEARCH 1
 #include "pmchss_common.glsl"
 
 const int kRadius = 3;  // 7x7 max filter and 7x7 Gaussian (section 2.2)
@@ -33,6 +34,7 @@ const int kThreads = kRegionTexels;
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_position;    // full resolution, w = linear view depth (0: background)
+uniform sampler2D u_normal;      // full resolution, world-space unit normal (receiver plane)
 uniform sampler2D u_shadow_map;  // raw window depth, nearest (Listing 3's pointClampSampler)
 uniform int u_default_one;       // section 2.2: write 1 instead of 0 where no blocker is found
 uniform float u_blur_sigma;      // mask texels (section 2.2: 3)
@@ -50,17 +52,18 @@ float search(ivec2 p, ivec2 mask_size, ivec2 full_size) {
 #endif
   vec4 pos = texelFetch(u_position, full, 0);
   if (pos.w <= 0.0) return value;
-  vec3 c = shadow_coord(pos.xyz);
-  if (!pmchss_in_shadow_frustum(c)) return value;
-  vec2 dz_duv = receiver_plane_gradient(u_position, full, c, vec3(0.0));
+  Receiver r;
+  r.coord = shadow_coord(pos.xyz);
+  if (!pmchss_in_shadow_frustum(r.coord)) return value;
+  r.dz_duv = receiver_depth_gradient(u_position, full, pos.xyz, texelFetch(u_normal, full, 0).xyz, r.coord);
   // Noise on the mask's own pixel grid: neighbouring mask texels get different rotations.
   float phi = pmchss_noise_phi(p, false);
   float blocker;
-  float count = pmchss_blocker_search(u_shadow_map, c.xy, c.z, dz_duv, BLOCKER_SAMPLES, phi, blocker);
+  float count = pmchss_blocker_search(u_shadow_map, r, BLOCKER_SAMPLES, phi, blocker);
 #ifdef OUTPUT_BLOCKER_DEPTH
   return blocker;
 #else
-  return count > 0.0 ? pmchss_penumbra_from_blocker(c.z, blocker) : value;
+  return count > 0.0 ? pmchss_penumbra_from_blocker(r.coord.z, blocker) : value;
 #endif
 }
 

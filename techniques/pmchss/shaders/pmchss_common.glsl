@@ -12,7 +12,6 @@ uniform float u_search_radius;           // shadow-map UV: kernel scale x shadow
 uniform float u_penumbra_k;              // Listing 4's 80
 uniform float u_depth_bias;              // window depth units
 uniform int u_receiver_plane;            // 1: tilt comparisons along the receiver plane
-uniform float u_shadow_texel;            // one shadow-map texel in UV (1 / shadow size)
 
 const float kTwoPi = 6.28318530718;
 
@@ -25,28 +24,42 @@ float pmchss_noise_phi(ivec2 pixel, bool checker) {
   return kTwoPi * interleaved_gradient_noise(centre);
 }
 
-// Receiver depth compared against a tap at uv offset `o`: the plane-extrapolated window depth
-// (receiver_plane.glsl) minus the constant bias.
-// With the plane, a tap also carries the plane's depth change across one texel: the map holds
-// one depth per texel, so a slanted receiver differs from its own texel's stored depth by up to
-// |dz/du| + |dz/dv| texels' worth ("fractional texel" error, Isidoro 2006).
-float pmchss_receiver_depth(float z_window, vec2 dz_duv, vec2 o) {
-  float z = z_window - u_depth_bias;
-  if (u_receiver_plane == 1) z += dot(o, dz_duv) - (abs(dz_duv.x) + abs(dz_duv.y)) * u_shadow_texel;
-  return z;
+// Receiver depth compared against a tap at uv offset `o`: the receiver plane's depth there
+// minus the constant bias (receiver_depth_at, passes/common/receiver_plane.glsl: the code every
+// filtering technique shares); with receiver_plane_bias off, the plane is flat.
+float pmchss_receiver_depth(Receiver r, vec2 o) {
+  if (u_receiver_plane == 0) r.dz_duv = vec2(0.0);
+  return receiver_depth_at(r, o, u_depth_bias);
 }
 
 // Average blocker search, section 2.1, Listing 3: N Vogel taps inside the search radius, point
 // sampled; taps closer to the light than the receiver are blockers and their depths averaged.
 // Returns the number of blockers; `avg_window_depth` is their mean window depth.
-float pmchss_blocker_search(sampler2D shadow_map, vec2 uv, float z_window, vec2 dz_duv, int n,
-                            float phi, out float avg_window_depth) {
+// Search radius, shadow-map UV. The paper's is fixed: penumbra_kernel_scale x the largest
+// kernel radius (section 2.2: wider than the filter, so the low-resolution mask covers the whole
+// penumbra). The physical mapping knows this receiver's largest kernel: half the penumbra of a
+// blocker at the map's near plane (blocker_search_width_uv in shadow_common.glsl, as PCSS
+// searches), so it scales that instead; on thin, close casters the fixed region averages in far
+// blockers of other receivers (poles: penumbra RMSE 0.108 -> 0.079, techniques/pmchss/README.md).
+// The penumbra mask (PENUMBRA_MASK_SEARCH) keeps the paper's fixed region in every mapping: it is
+// blurred afterwards, so it must find blockers beyond the penumbra it marks.
+float pmchss_search_radius(Receiver r) {
+#if PENUMBRA_MAPPING == 1 && !defined(PENUMBRA_MASK_SEARCH)
+  float largest_kernel = min(0.5 * blocker_search_width_uv(light_distance(r.coord.z)), u_shadow_filter_max_size);
+  return largest_kernel * (u_search_radius / u_shadow_filter_max_size);
+#else
+  return u_search_radius;
+#endif
+}
+
+float pmchss_blocker_search(sampler2D shadow_map, Receiver r, int n, float phi, out float avg_window_depth) {
   float sum = 0.0;
   float count = 0.0;
+  const float radius = pmchss_search_radius(r);
   for (int i = 0; i < n; ++i) {
-    vec2 o = u_search_radius * vogel_disk_sample(i, n, phi);
-    float d = textureLod(shadow_map, uv + o, 0.0).r;
-    if (d < pmchss_receiver_depth(z_window, dz_duv, o)) {
+    vec2 o = radius * vogel_disk_sample(i, n, phi);
+    float d = textureLod(shadow_map, r.coord.xy + o, 0.0).r;
+    if (d < pmchss_receiver_depth(r, o)) {
       sum += d;
       count += 1.0;
     }
@@ -81,18 +94,17 @@ float pmchss_penumbra_from_blocker(float z_window, float blocker_window) {
 
 // Soft shadow of Listing 6: FILTER_SAMPLES Vogel taps over penumbra x shadow_filter_max_size,
 // each a hardware 2x2 bilinear comparison (sampler2DShadow, "SampleCmp" in the paper).
-float pmchss_filter(sampler2DShadow shadow_cmp, vec2 uv, float z_window, vec2 dz_duv,
-                    float penumbra, float phi) {
+float pmchss_filter(sampler2DShadow shadow_cmp, Receiver r, float penumbra, float phi) {
   float lit = 0.0;
   float radius = penumbra * u_shadow_filter_max_size;
   // A kernel narrower than a texel puts all FILTER_SAMPLES taps on the same 2x2 footprint:
   // one tap gives the same value (this is where the paper's penumbra-mask speed-up comes from
   // on a GPU whose cache already holds the whole shadow map: contact and fully lit pixels).
   if (radius < 0.5 * u_shadow_texel)
-    return texture(shadow_cmp, vec3(uv, pmchss_receiver_depth(z_window, dz_duv, vec2(0.0))));
+    return texture(shadow_cmp, vec3(r.coord.xy, pmchss_receiver_depth(r, vec2(0.0))));
   for (int i = 0; i < FILTER_SAMPLES; ++i) {
     vec2 o = radius * vogel_disk_sample(i, FILTER_SAMPLES, phi);
-    lit += texture(shadow_cmp, vec3(uv + o, pmchss_receiver_depth(z_window, dz_duv, o)));
+    lit += texture(shadow_cmp, vec3(r.coord.xy + o, pmchss_receiver_depth(r, o)));
   }
   return lit / float(FILTER_SAMPLES);
 }

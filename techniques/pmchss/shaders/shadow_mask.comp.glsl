@@ -36,15 +36,17 @@ float shadow_at(ivec2 pixel, ivec2 screen, bool checker) {
   // A receiver facing away from the light is in its own shadow (closed geometry); its depth is
   // too close to the occluding front face for any bias to classify it reliably.
   if (faces_away_from_light(pos.xyz, texelFetch(u_normal, pixel, 0).xyz)) return 0.0;
-  vec3 c = shadow_coord(pos.xyz);
-  if (!pmchss_in_shadow_frustum(c)) return 1.0;
-  vec2 dz_duv = receiver_plane_gradient(u_position, pixel, c, vec3(0.0));
+  Receiver r;
+  r.coord = shadow_coord(pos.xyz);
+  if (!pmchss_in_shadow_frustum(r.coord)) return 1.0;
+  r.dz_duv = receiver_depth_gradient(u_position, pixel, pos.xyz, texelFetch(u_normal, pixel, 0).xyz, r.coord);
+  vec3 c = r.coord;
   float phi = pmchss_noise_phi(pixel, checker);
 #if PENUMBRA_MAPPING == 2
   float penumbra = 1.0;  // fixed kernel: Table 1's "Regular Shadow Mask", no search at all
 #elif PENUMBRA_SOURCE == 0
   float blocker;
-  float count = pmchss_blocker_search(u_shadow_map, c.xy, c.z, dz_duv, BLOCKER_SAMPLES, phi, blocker);
+  float count = pmchss_blocker_search(u_shadow_map, r, BLOCKER_SAMPLES, phi, blocker);
   float penumbra = count > 0.0 ? pmchss_penumbra_from_blocker(c.z, blocker) : 0.0;
 #elif PENUMBRA_SOURCE == 1
   float penumbra = textureLod(u_penumbra_mask, (vec2(pixel) + 0.5) / vec2(screen), 0.0).r;
@@ -52,7 +54,7 @@ float shadow_at(ivec2 pixel, ivec2 screen, bool checker) {
   // Section 2.3: the min depth is used directly as the average blocker depth.
   float penumbra = pmchss_penumbra_from_blocker(c.z, textureLod(u_min_depth, c.xy, 0.0).r);
 #endif
-  return clamp(pmchss_filter(u_shadow_cmp, c.xy, c.z, dz_duv, penumbra, phi), 0.0, 1.0);
+  return clamp(pmchss_filter(u_shadow_cmp, r, penumbra, phi), 0.0, 1.0);
 }
 
 void main() {

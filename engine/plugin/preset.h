@@ -3,17 +3,22 @@
 //   {"technique": "pcss", "parameters": {"samples": 32, "use_blur": false}}
 // Loading is all-or-nothing: a preset written for another technique, or naming a parameter the
 // technique does not have, or holding a value out of range, is rejected and changes nothing.
-// GL-free (unit-tested without a window).
+// GL-free (unit-tested without a window). Shipped presets live beside a technique's graph:
+// techniques/baseline/pcss.json -> techniques/baseline/presets/pcss.<preset>.json (`paper`: the
+// paper's constants).
 //
 //   std::string text = format_preset("pcss", session.params());
 //   Result<Preset> p = parse_preset(text, "presets/soft.json");
 //   Result<graph::ParameterSet> next = preset_applied(*p, "pcss", session.params());
 #include <string>
+#include <vector>
 
 #include "graph/parameters.h"
 #include "util/error.h"
 
-namespace penumbra::sandbox {
+namespace penumbra::plugin {
+
+struct Technique;
 
 struct Preset {
   std::string technique;
@@ -28,7 +33,12 @@ Result<Preset> parse_preset(const std::string& text, const std::string& source);
 Result<graph::ParameterSet> preset_applied(const Preset& preset, const std::string& technique,
                                            const graph::ParameterSet& current);
 
-// File helpers; errors name the path.
-Status write_text_file(const std::string& path, const std::string& text);
+// Names of the presets shipped with a technique (embedded at build time, or files beside a
+// plugin's graph), sorted.
+std::vector<std::string> shipped_presets(const Technique& technique);
+// A shipped preset of a technique (read through the shader file system: embedded in installed
+// binaries), or a preset file when `name` is a path (contains '/' or ends in .json). The error
+// lists the shipped presets when none matches.
+Result<Preset> load_preset(const Technique& technique, const std::string& name);
 
-}  // namespace penumbra::sandbox
+}  // namespace penumbra::plugin
