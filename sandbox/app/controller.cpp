@@ -308,6 +308,7 @@ Status SandboxController::set_compare(bool enabled, const std::string& with) {
   if (!enabled) {
     compare_.enabled = false;
     compare_.stats.reset();
+    compare_.rmse_history.clear();
     secondary_.reset();  // frees its textures: compare mode costs nothing when off
     return note({});
   }
@@ -323,6 +324,7 @@ Status SandboxController::set_compare(bool enabled, const std::string& with) {
   }
   compare_.enabled = true;
   compare_.stats.reset();
+  compare_.rmse_history.clear();
   return note({});
 }
 
@@ -345,6 +347,9 @@ void SandboxController::update_compare_stats() {
   }
   compare_.stats = *e;
   compare_.stats_error.clear();
+  compare_.rmse_history.push_back(static_cast<float>(e->rmse));
+  if (compare_.rmse_history.size() > CompareState::kHistory)
+    compare_.rmse_history.erase(compare_.rmse_history.begin());
 }
 
 // --- frames -----------------------------------------------------------------------------------
@@ -375,6 +380,18 @@ std::vector<Error> SandboxController::shader_errors() const {
 }
 
 Status SandboxController::render_frame() {
+  Status s = render_and_compose();
+  if (s) {
+    refused_.clear();
+  } else {
+    // Never leave the last good image up: the view shows that this frame was refused.
+    refused_ = s.error().to_string();
+    display_.show_refused();
+  }
+  return s;
+}
+
+Status SandboxController::render_and_compose() {
   auto now = std::chrono::steady_clock::now();
   if (now - last_reload_ > std::chrono::milliseconds(500)) {
     reload_shaders();

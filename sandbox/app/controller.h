@@ -41,6 +41,8 @@ struct CompareState {
   int stats_every = 10;             // frames between RMSE read-backs
   std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
   std::string stats_error;
+  std::vector<float> rmse_history;  // one per read-back, newest last, at most kHistory
+  static constexpr size_t kHistory = 240;
 };
 
 class SandboxController {
@@ -115,6 +117,10 @@ class SandboxController {
   // `with` empty: "reference" when registered, else the technique after the primary.
   Status set_compare(bool enabled, const std::string& with = "");
   void set_compare_view(CompareState::View view) { compare_.view = view; }
+  // Reads the statistics back from the last rendered frame now (scripts' `metrics`, exports).
+  void refresh_compare_stats() {
+    if (compare_.enabled && secondary_ && frames_ > 0) update_compare_stats();
+  }
 
   // --- frames -------------------------------------------------------------------------------
   Status resize(int width, int height);
@@ -124,6 +130,9 @@ class SandboxController {
   // (every ~0.5 s) reloads changed shaders.
   Status render_frame();
   std::uint64_t frames() const { return frames_; }
+  // The error of the last frame when it was refused ("" after a good one). A refused frame's
+  // presentation is DisplayPass::kRefusedColor, never the previous image.
+  const std::string& refused() const { return refused_; }
   GLuint presentation_framebuffer() const { return display_.framebuffer(); }
   Status save_presentation_png(const std::string& path) const;
   // Shader compile errors of every program in use (technique passes and display), with file:line.
@@ -138,6 +147,7 @@ class SandboxController {
 
  private:
   Status configure_secondary();
+  Status render_and_compose();
   void update_compare_stats();
   std::string default_compare_partner() const;
 
@@ -154,6 +164,7 @@ class SandboxController {
   int width_ = 0, height_ = 0;
   std::uint64_t frames_ = 0;
   std::string message_;
+  std::string refused_;
   std::chrono::steady_clock::time_point last_reload_ = std::chrono::steady_clock::now();
 };
 

@@ -49,6 +49,9 @@ class DisplayPass {
 
   // Binds the presentation target and clears it to dark grey.
   void begin() const;
+  // A refused frame: the whole target in kRefusedColor (the UI writes why on top).
+  static constexpr float kRefusedColor[4] = {0.35f, 0.04f, 0.06f, 1.0f};
+  void show_refused() const;
   Status draw(const Layer& layer);
   // difference.r = |a.r - b.r|, difference.g = receiver coverage (position.w > 0).
   Status difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& position);

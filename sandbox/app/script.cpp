@@ -28,6 +28,7 @@ constexpr StepName kSteps[] = {
     {"screenshot", StepKind::screenshot}, {"compare", StepKind::compare},
     {"view", StepKind::view},         {"resize", StepKind::resize},
     {"expect_no_gl_error", StepKind::expect_no_gl_error}, {"ground", StepKind::ground},
+    {"metrics", StepKind::metrics},
 };
 
 std::string valid_step_names() {
@@ -103,15 +104,17 @@ void parse_body(ScriptStep& s, const json& v) {
   switch (s.kind) {
     case StepKind::scene: s.text = need_string(v, "scene"); break;
     case StepKind::technique: s.text = need_string(v, "technique"); break;
-    case StepKind::screenshot: {
-      s.text = need_string(v, "screenshot");
-      if (s.text.empty()) problem("screenshot: the path is empty");
+    case StepKind::screenshot:
+    case StepKind::metrics: {
+      const std::string key = step_kind_name(s.kind);
+      s.text = need_string(v, key);
+      if (s.text.empty()) problem(key + ": the path is empty");
       // Checked before any frame runs: a long script must not fail at its last step.
       const std::filesystem::path dir = std::filesystem::path(s.text).parent_path();
       std::error_code ec;
       if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
-        problem("screenshot: directory '" + shortened(dir.string()) + "' does not exist");
-      if (std::filesystem::is_directory(s.text, ec)) problem("screenshot: '" + shortened(s.text) + "' is a directory");
+        problem(key + ": directory '" + shortened(dir.string()) + "' does not exist");
+      if (std::filesystem::is_directory(s.text, ec)) problem(key + ": '" + shortened(s.text) + "' is a directory");
       break;
     }
     case StepKind::reset:

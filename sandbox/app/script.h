@@ -24,7 +24,7 @@ namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error, ground
+  resize, expect_no_gl_error, ground, metrics
 };
 const char* step_kind_name(StepKind kind);
 
@@ -62,7 +62,7 @@ struct ScriptStep {
   StepKind kind = StepKind::wait;
   int index = 0;     // position in the script
   std::string source;  // the script file, named by errors
-  std::string text;  // scene, technique, screenshot path, reset target ("all" or a parameter)
+  std::string text;  // scene, technique, screenshot or metrics path, reset target ("all" or a parameter)
   std::vector<std::pair<std::string, std::string>> assignments;  // set: name -> value text
   int number = 0;    // wait frames, shadow size (texels)
   bool flag = false;  // ground: the switch

@@ -1,5 +1,7 @@
 #include "app/script_runner.h"
 
+#include "app/compare_metrics.h"
+
 #include <cstdio>
 #include <utility>
 
@@ -45,6 +47,7 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
       return {};
     case StepKind::reset: return c.reset_param(step.text);
     case StepKind::ground: return c.set_ground(step.flag);
+    case StepKind::metrics: return write_metrics(c, step.text);
     case StepKind::camera:
       if (step.camera.choice) {
         scene::CameraChoice choice;
