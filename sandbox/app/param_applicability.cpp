@@ -62,7 +62,16 @@ Applicability param_applicability(const graph::ParamDesc& desc, const graph::Par
       break;
     }
   }
-  if (why.empty()) why = "no pass of the compiled graph reads it";
+  if (why.empty()) {
+    // Bound implicitly (by name): the pass that would read it is among the disabled ones.
+    why = "no pass of the compiled graph reads it";
+    std::string off;
+    int listed_passes = 0;
+    for (const graph::PassDecl& pass : graph.passes)
+      if (listed(plan.disabled, pass.name) && !pass.enabled.empty() && listed_passes++ < 3)
+        off += (off.empty() ? "" : ", ") + pass.name + " (enabled: " + pass.enabled + ")";
+    if (!off.empty()) why += "; disabled now: " + off;
+  }
   return {false, "no effect under the current settings: " + why};
 }
 
