@@ -23,7 +23,9 @@
 #include <string>
 #include <vector>
 
+#include "app/compare.h"
 #include "app/display.h"
+#include "app/frame_composer.h"
 #include "exec/pass.h"
 #include "metrics/mask_metrics.h"
 #include "plugin/technique.h"
@@ -32,18 +34,6 @@
 
 namespace penumbra::sandbox {
 
-struct CompareState {
-  bool enabled = false;
-  std::string with;                 // secondary technique
-  enum class View { split, error } view = View::split;
-  float split = 0.5f;               // split position, fraction of the width (left = primary)
-  float error_max = 0.25f;          // |a - b| shown white in the heat map
-  int stats_every = 10;             // frames between RMSE read-backs
-  std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
-  std::string stats_error;
-  std::vector<float> rmse_history;  // one per read-back, newest last, at most kHistory
-  static constexpr size_t kHistory = 240;
-};
 
 class SandboxController {
  public:
@@ -149,7 +139,6 @@ class SandboxController {
   Status configure_secondary();
   Status render_and_compose();
   void update_compare_stats();
-  std::string default_compare_partner() const;
 
   const plugin::TechniqueRegistry& registry_;
   mutable std::map<std::string, std::string> descriptions_;
