@@ -78,6 +78,9 @@ std::string metrics_json(SandboxController& c) {
   j["scene"] = c.scene_name();
   j["technique"] = {{"name", c.session().technique()}, {"parameters", parameters_json(c.session())}};
   j["passes"] = passes_json(c.session());
+  const ViewerSettings& v = c.viewer();
+  j["viewer"] = {{"resource", v.resource}, {"min", v.min}, {"max", v.max}, {"channel", v.channel},
+                 {"zoom", v.zoom.zoom}, {"center", {v.zoom.center.x, v.zoom.center.y}}};
   j["refused"] = c.refused().empty() ? json(nullptr) : json(c.refused());
   const CompareState& cs = c.compare();
   if (!cs.enabled || !c.secondary()) {

@@ -19,7 +19,8 @@ std::string penumbra_rmse_text(const metrics::MaskErrors& e);
 std::string reference_progress_text(SandboxController& c);
 bool reference_converged(SandboxController& c);
 
-// {"frame", "size", "scene", "technique": {"name", "parameters"}, "passes": [{"name", "type",
+// {"frame", "size", "scene", "technique": {"name", "parameters"}, "viewer": {"resource", "min",
+//  "max", "channel", "zoom", "center"}, "refused", "passes": [{"name", "type",
 //  "last_ms", "median_ms"}], "compare": null | {"with": {...}, "view", "rmse", "rmse_penumbra"
 //  (null without penumbra), "mae", "max_error", "pixels", "penumbra_pixels", "reference":
 //  {"method", "done", "total", "converged"} | null, "rmse_history": [...], "passes": [...]}}.

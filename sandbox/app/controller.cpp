@@ -1,5 +1,7 @@
 #include "app/controller.h"
 
+#include "app/inspector.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -360,6 +362,7 @@ Status SandboxController::render_and_compose() {
   }
   ++frames_;
 
+  if (viewer_.auto_range && !viewer_.resource.empty() && frames_ % 15 == 1) (void)apply_auto_range(*this);
   return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr, compare_, viewer_, width_, height_});
 }
 

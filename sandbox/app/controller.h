@@ -101,6 +101,7 @@ class SandboxController {
 
   // --- resource viewer, compare -------------------------------------------------------------
   ViewerSettings& viewer() { return viewer_; }
+  const DisplayPass& display() const { return display_; }
   // Keeps `name` alive in the primary plan (recompiles) and shows it; "" turns the viewer off.
   Status view_resource(const std::string& name);
   CompareState& compare() { return compare_; }

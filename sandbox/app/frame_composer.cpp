@@ -14,6 +14,7 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
   display.begin();
   DisplayPass::Layer base;
   base.viewport = {0, 0, in.width, in.height};
+  base.uv_rect = zoomed_uv_rect(in.viewer.zoom);
   gl::Texture* color_a = in.primary.executor().resource(plugin::kColor);
   if (!color_a) return make_error("the frame has no 'color' resource", ErrorKind::internal);
   if (comparing && in.compare.view == CompareState::View::error) {
@@ -33,10 +34,10 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
     DisplayPass::Layer left = base, right = base;
     left.texture = color_a;
     left.viewport = {0, 0, split_px, in.height};
-    left.uv_rect = {0.0f, 0.0f, float(split_px) / in.width, 1.0f};
+    left.uv_rect = zoomed_uv_rect(in.viewer.zoom, {0.0f, 0.0f, float(split_px) / in.width, 1.0f});
     right.texture = color_b ? color_b : color_a;
     right.viewport = {split_px, 0, in.width - split_px, in.height};
-    right.uv_rect = {float(split_px) / in.width, 0.0f, float(in.width - split_px) / in.width, 1.0f};
+    right.uv_rect = zoomed_uv_rect(in.viewer.zoom, {float(split_px) / in.width, 0.0f, float(in.width - split_px) / in.width, 1.0f});
     if (split_px > 0)
       if (Status s = display.draw(left); !s) return s;
     if (split_px < in.width)
@@ -57,13 +58,11 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
                           t->height() == in.height;
       v.near_far = {in.primary.camera().near_plane, in.primary.camera().far_plane};
       if (in.viewer.placement == ViewerSettings::Placement::full) {
-        v.viewport = {0, 0, in.width, in.height};
+        // The texture's own aspect (a square shadow map stays square), zoomed like the frame.
+        v.viewport = fitted_rect(in.width, in.height, t->width(), t->height());
+        v.uv_rect = zoomed_uv_rect(in.viewer.zoom);
       } else {
-        // Bottom-right, a third of the window, the texture's aspect kept.
-        int w = std::max(in.width / 3, 1);
-        int h = std::max(static_cast<int>(std::lround(float(w) * t->height() / std::max(t->width(), 1))), 1);
-        h = std::min(h, in.height);
-        v.viewport = {in.width - w - 8, 8, w, h};
+        v.viewport = inset_rect(in.width, in.height, t->width(), t->height());
       }
       if (Status s = display.draw(v); !s) return s;
     }

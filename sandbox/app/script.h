@@ -24,7 +24,7 @@ namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error, ground, metrics
+  resize, expect_no_gl_error, ground, metrics, inspect
 };
 const char* step_kind_name(StepKind kind);
 
@@ -56,6 +56,16 @@ struct ViewStep {
   std::string placement; // "full" | "inset"; empty = unchanged
   std::optional<float> min, max;
   std::optional<int> channel;
+  std::optional<float> zoom;           // 1..64
+  std::optional<glm::vec2> center;     // uv at the frame's middle
+  std::optional<bool> auto_range;
+};
+
+// {"inspect": {"at": [x, y], "out": "p.json"}}: the pixel inspector's readout of frame pixel
+// (x, y) (origin top-left) written as JSON.
+struct InspectStep {
+  int x = 0, y = 0;
+  std::string out;
 };
 
 struct ScriptStep {
@@ -71,6 +81,7 @@ struct ScriptStep {
   LightStep light;
   CompareStep compare;
   ViewStep view;
+  InspectStep inspect;
 };
 
 // Limits of a script (docs/sandbox.md): steps, and nesting of any value.

@@ -6,9 +6,11 @@
 #include <imgui.h>
 
 #include "app/compare_metrics.h"
+#include "app/inspector.h"
 #include "app/param_applicability.h"
 #include "app/viewport_overlay.h"
 #include "app/widget_spec.h"
+#include "metrics/heat_map.h"
 #include "scene/builtin_scenes.h"
 
 namespace penumbra::sandbox {
@@ -223,6 +225,34 @@ void graph_panel(SandboxController& c) {
   tooltip("glFinish and a GL error check after every pass");
 }
 
+// The legend of the viewer's colour map: the gradient from min to max, labelled.
+void colour_bar(const ViewerSettings& v) {
+  if (v.resource.empty() || v.map == ViewerSettings::Map::color) return;
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float w = ImGui::GetContentRegionAvail().x * 0.9f, h = 12.0f;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  constexpr int kSteps = 32;
+  auto colour = [&](float t) -> ImU32 {
+    if (v.map == ViewerSettings::Map::grey) {
+      const int g = static_cast<int>(t * 255.0f);
+      return IM_COL32(g, g, g, 255);
+    }
+    const glm::u8vec3 c = metrics::heat_color(t);
+    return IM_COL32(c.r, c.g, c.b, 255);
+  };
+  for (int i = 0; i < kSteps; ++i) {
+    const float t0 = float(i) / kSteps, t1 = float(i + 1) / kSteps;
+    dl->AddRectFilledMultiColor(ImVec2(at.x + t0 * w, at.y), ImVec2(at.x + t1 * w, at.y + h), colour(t0), colour(t1),
+                                colour(t1), colour(t0));
+  }
+  ImGui::Dummy(ImVec2(w, h));
+  ImGui::Text("%.4g", v.min);
+  ImGui::SameLine(w * 0.5f - 20.0f);
+  ImGui::Text("%.4g", 0.5 * (double(v.min) + double(v.max)));
+  ImGui::SameLine(std::max(w - 50.0f, 0.0f));
+  ImGui::Text("%.4g", v.max);
+}
+
 void viewer_panel(SandboxController& c) {
   if (!ImGui::CollapsingHeader("Resource viewer")) return;
   ViewerSettings& v = c.viewer();
@@ -238,8 +268,22 @@ void viewer_panel(SandboxController& c) {
   int place = static_cast<int>(v.placement);
   if (ImGui::Combo("placement", &place, "full screen\0inset\0"))
     v.placement = static_cast<ViewerSettings::Placement>(place);
-  ImGui::DragFloatRange2("range", &v.min, &v.max, 0.005f, 0.0f, 0.0f, "min %.3f", "max %.3f");
+  ImGui::DragFloatRange2("range", &v.min, &v.max, 0.005f, 0.0f, 0.0f, "min %.4g", "max %.4g");
+  if (ImGui::Button("auto range")) (void)c.note(apply_auto_range(c));
+  tooltip("min/max of the viewed channel (view distance for screen depth, background skipped)");
+  ImGui::SameLine();
+  ImGui::Checkbox("follow", &v.auto_range);
+  tooltip("keep the range at the resource's min/max (every 15 frames)");
+  colour_bar(v);
   ImGui::SliderInt("channel", &v.channel, 0, 3);
+  float zoom = v.zoom.zoom;
+  if (ImGui::SliderFloat("zoom", &zoom, 1.0f, kMaxZoom, "%.2gx", ImGuiSliderFlags_Logarithmic)) {
+    v.zoom.zoom = zoom;
+    v.zoom = clamped(v.zoom);
+  }
+  tooltip("mouse wheel over the view zooms about the cursor, middle-drag pans; the compare split's sides zoom together");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("1:1")) v.zoom = {};
   ImGui::Checkbox("linearise depth", &v.linearize_depth);
   tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
 }

@@ -1,8 +1,11 @@
 #include "app/viewport_overlay.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include <imgui.h>
+
+#include "app/inspector.h"
 
 namespace penumbra::sandbox {
 
@@ -82,6 +85,21 @@ void draw_viewport_overlay(SandboxController& c, const Layout& layout) {
             "|A - B|  A: " + settings_label(c.session()) + "   B: " + settings_label(*c.secondary()), w - 16);
     }
   }
+  const ViewerSettings& v = c.viewer();
+  if (!v.resource.empty() && !c.session().executor().resource(v.resource))
+    label(dl, ImVec2(x0 + 8, y0 + h - 48), "viewed resource '" + v.resource + "' is not produced by the current graph",
+          std::max(w - 16, 60.0f));
+  if (v.zoom.zoom > 1.0f) {
+    char z[32];
+    std::snprintf(z, sizeof z, "zoom %.3gx", v.zoom.zoom);
+    label(dl, ImVec2(x0 + w - 90, y0 + h - 24), z, 90);
+  }
+  // The pixel inspector: the value under the cursor.
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const int px = int(mouse.x) - vp.x, py = int(mouse.y) - vp.y;
+  if (px >= 0 && py >= 0 && px < int(w) && py < int(h) && !ImGui::GetIO().WantCaptureMouse && c.frames() > 0)
+    if (Result<PixelReadout> r = inspect_pixel(c, {px, py}); r && r->texel)
+      label(dl, ImVec2(x0 + 8, y0 + h - 24), readout_text(*r), std::max(w - 110, 60.0f));
   if (!c.refused().empty())
     label(dl, ImVec2(x0 + 12, y0 + h * 0.5f - 20), "frame refused: " + c.refused(), std::max(w - 24, 60.0f));
 }

@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
@@ -54,6 +55,18 @@ class CameraInput {
     if (rmb && !looking_ && !io.WantCaptureMouse && viewport.contains(int(x), int(y))) looking_ = true;
     if (!rmb) looking_ = false;
     if (looking_) c.look(float(x - last_x_), float(y - last_y_));
+    // Zoom (wheel, about the cursor) and pan (middle drag) of what fills the frame.
+    const bool over = viewport.contains(int(x), int(y)) && !io.WantCaptureMouse;
+    const glm::vec2 frame(float(std::max(c.width(), 1)), float(std::max(c.height(), 1)));
+    ViewZoom& zoom = c.viewer().zoom;
+    if (over && io.MouseWheel != 0.0f) {
+      const glm::vec2 anchor((float(x) - viewport.x) / frame.x, 1.0f - (float(y) - viewport.y) / frame.y);
+      zoom = zoom_about(zoom, std::pow(1.25f, io.MouseWheel), anchor);
+    }
+    const bool mmb = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+    if (mmb && !panning_ && over) panning_ = true;
+    if (!mmb) panning_ = false;
+    if (panning_) zoom = pan_by(zoom, glm::vec2(float(x - last_x_) / frame.x, -float(y - last_y_) / frame.y));
     last_x_ = x;
     last_y_ = y;
   }
@@ -65,7 +78,7 @@ class CameraInput {
     was_down = down;
     return edge;
   }
-  bool looking_ = false, space_ = false, f12_ = false;
+  bool looking_ = false, panning_ = false, space_ = false, f12_ = false;
   double last_x_ = 0, last_y_ = 0;
 };
 

@@ -177,6 +177,23 @@ TEST(Script, GroundAndCameraChoiceSteps) {
   EXPECT_FALSE((*steps)[2].camera.position);
 }
 
+TEST(Script, InspectAndViewZoomSteps) {
+  auto steps = parse_script(R"([{"view": {"resource": "shadow_mask", "zoom": 4, "center": [0.25, 0.5], "auto_range": true}},
+                               {"inspect": {"at": [10, 20], "out": "p.json"}}, {"metrics": "m.json"}])", "s.json");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  EXPECT_EQ(*(*steps)[0].view.zoom, 4.0f);
+  EXPECT_EQ(*(*steps)[0].view.center, glm::vec2(0.25f, 0.5f));
+  EXPECT_TRUE(*(*steps)[0].view.auto_range);
+  EXPECT_EQ((*steps)[1].kind, StepKind::inspect);
+  EXPECT_EQ((*steps)[1].inspect.x, 10);
+  EXPECT_EQ((*steps)[1].inspect.y, 20);
+  EXPECT_EQ((*steps)[1].inspect.out, "p.json");
+  EXPECT_EQ((*steps)[2].kind, StepKind::metrics);
+  EXPECT_FALSE(parse_script(R"([{"view": {"zoom": 100}}])", "s.json"));
+  EXPECT_FALSE(parse_script(R"([{"inspect": {"at": [1, 2]}}])", "s.json"));
+  EXPECT_FALSE(parse_script(R"([{"metrics": ""}])", "s.json"));
+}
+
 TEST(Options, SceneStagingOptionsAreTheClis) {
   auto o = parse_sandbox_options({"--camera", "1,2,3:0,0,0", "--light-dir", "0,-2,0", "--light-size", "0.5",
                                   "--ground", "off"});

@@ -136,4 +136,52 @@ TEST(SandboxXvfbViewport, MetricsStepWritesCompareStatisticsAndPassTimes) {
   if (!HasFailure()) fs::remove_all(dir);
 }
 
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  EXPECT_TRUE(in) << "no " << p;
+  return in ? nlohmann::json::parse(in) : nlohmann::json();
+}
+
+// The tiny technique's mask (darken on): lit_level 0.5 halved inside 8-pixel stripes on
+// geometry (even stripe index), 1 halved elsewhere.
+float tiny_mask_at(int texel_x) { return (texel_x / 8) % 2 == 0 ? 0.25f : 0.5f; }
+
+TEST(SandboxXvfbViewport, PixelInspectorReadsTheTexelUnderAZoomedPixel) {
+  const std::string x = xvfb();
+  ASSERT_FALSE(x.empty()) << "xvfb-run is not installed: run scripts/setup.sh (installs xvfb)";
+  const fs::path dir = penumbra::test::fresh_temp_dir("sandbox_xvfb_inspect");
+  auto out = [&](const char* name) { return (dir / name).string(); };
+  const std::string script = script_file(
+      dir, R"([{"technique": "sandbox_tiny"}, {"wait": 2},
+               {"inspect": {"at": [3, 300], "out": ")" + out("final.json") + R"("}},
+               {"view": {"resource": "shadow_mask", "placement": "full", "map": "heat", "zoom": 4, "center": [0.25, 0.25],
+                         "auto_range": true}}, {"wait": 2},
+               {"inspect": {"at": [0, 160], "out": ")" + out("a.json") + R"("}},
+               {"inspect": {"at": [40, 160], "out": ")" + out("b.json") + R"("}},
+               {"metrics": ")" + out("m.json") + R"("}, {"screenshot": ")" + out("zoomed.png") + R"("}])");
+  RunResult r = run_in_xvfb(x, std::string(SANDBOX_TEST_HOST) + " --scene ball" + kFrame + " --script " + script);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+
+  const nlohmann::json final_image = read_json(out("final.json"));
+  EXPECT_EQ(final_image["source"], "color (A)");
+  EXPECT_EQ(final_image["texel"], nlohmann::json({3, kFrameH - 1 - 300})) << "zoom 1: texel = pixel, rows flipped";
+  EXPECT_GE(final_image["channels"].get<int>(), 3);
+
+  // Zoom 4 about uv (0.25, 0.25): frame pixel (px, py) shows uv 0.125 + 0.25 * (pixel centre / size).
+  for (const auto& [name, px] : {std::pair<const char*, int>{"a.json", 0}, {"b.json", 40}}) {
+    const nlohmann::json j = read_json(out(name));
+    const int tx = static_cast<int>((0.125 + 0.25 * (px + 0.5) / kFrameW) * kFrameW);
+    const int ty = static_cast<int>((0.125 + 0.25 * (kFrameH - 1 - 160 + 0.5) / kFrameH) * kFrameH);
+    EXPECT_EQ(j["source"], "shadow_mask") << j.dump();
+    ASSERT_EQ(j["texel"], nlohmann::json({tx, ty})) << j.dump();
+    EXPECT_NEAR(j["value"][0].get<double>(), tiny_mask_at(tx), 1e-3) << j.dump();
+  }
+  EXPECT_NE(read_json(out("a.json"))["value"][0], read_json(out("b.json"))["value"][0]) << "two stripes apart";
+  // Auto range: the mask's own min and max.
+  const nlohmann::json m = read_json(out("m.json"));
+  EXPECT_NEAR(m["viewer"]["min"].get<double>(), 0.25, 1e-3) << m["viewer"].dump();
+  EXPECT_NEAR(m["viewer"]["max"].get<double>(), 0.5, 1e-3) << m["viewer"].dump();
+  if (!HasFailure()) fs::remove_all(dir);
+}
+
 }  // namespace
