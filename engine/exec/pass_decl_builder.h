@@ -70,6 +70,11 @@ class PassDeclBuilder {
                                std::string description) {
     return param(graph::enum_param(std::move(name), std::move(def), std::move(options), std::move(description)));
   }
+  // Valid values of the integer parameter added last: its min + k * n (2 from an odd min: odd).
+  PassDeclBuilder& step(int n) {
+    if (!decl_.params.empty()) decl_.params.back().step = n;
+    return *this;
+  }
   PassDeclBuilder& param(graph::ParamDesc desc) {
     decl_.params.push_back(std::move(desc));
     return *this;

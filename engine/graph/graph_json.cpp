@@ -120,7 +120,8 @@ class GraphReader {
       if (!t) error(GraphErrorCode::wrong_json_type, ptr + "/type", "type must be bool, int, float or enum, got \"" + shortened(text) + "\"");
       else d.type = *t;
     }
-    check_keys(j, ptr, {"name", "type", "default", "min", "max", "unit", "description", "structural", "options"});
+    check_keys(j, ptr, {"name", "type", "default", "min", "max", "step", "unit", "description", "structural", "options",
+                        "applies"});
     get_string(j, "unit", ptr, d.unit, false);
     get_text(j, "description", ptr, d.description);
     if (auto it = j.find("structural"); it != j.end()) {
@@ -134,6 +135,14 @@ class GraphReader {
         error(GraphErrorCode::wrong_json_type, ptr + "/" + key, std::string("\"") + key + "\" must be a finite number");
       else (std::string(key) == "min" ? d.min : d.max) = it->get<double>();
     }
+    if (auto it = j.find("step"); it != j.end()) {
+      if (d.type != ParamType::integer || !it->is_number_integer() || it->get<long long>() < 1 ||
+          it->get<long long>() > 1000000)
+        error(GraphErrorCode::wrong_json_type, ptr + "/step",
+              "\"step\" must be an integer in 1..1000000, on an int parameter (valid values: min + k * step)");
+      else d.step = it->get<int>();
+    }
+    get_text(j, "applies", ptr, d.applies);
     if (auto it = j.find("options"); it != j.end()) {
       if (!it->is_array()) error(GraphErrorCode::wrong_json_type, ptr + "/options", "\"options\" must be an array of strings");
       else
@@ -162,6 +171,27 @@ class GraphReader {
       }
     param_pointer_[d.name] = ptr;
     g.parameters.push_back(std::move(d));
+  }
+
+  // "applies" conditions, once every parameter is known. Unlike `enabled`, they may read
+  // non-structural parameters: they only tell a UI whether a value has an effect.
+  void check_applies(const GraphDesc& g) {
+    std::vector<ParamDesc> readable = g.parameters;
+    for (ParamDesc& d : readable) d.structural = true;  // so check() reports only real problems
+    const ParameterSet params(std::move(readable));
+    for (const ParamDesc& d : g.parameters) {
+      if (d.applies.empty()) continue;
+      const std::string where = param_pointer_[d.name] + "/applies";
+      Result<Condition> c = Condition::parse(d.applies);
+      if (!c) {
+        error(GraphErrorCode::bad_condition, where, "parameter '" + d.name + "': " + c.error().message);
+        continue;
+      }
+      if (std::optional<ConditionProblem> p = c->check(params))
+        error(p->kind == ConditionProblem::Kind::unknown_parameter ? GraphErrorCode::unknown_param_reference
+                                                                   : GraphErrorCode::bad_condition,
+              where, "parameter '" + d.name + "': " + p->message);
+    }
   }
 
   void read_resource(const std::string& name, const Json& j, const std::string& ptr, GraphDesc& g) {
@@ -443,6 +473,7 @@ class GraphReader {
     if (auto it = root.find("parameters"); it != root.end()) {
       if (!it->is_array()) error(GraphErrorCode::wrong_json_type, "/parameters", "\"parameters\" must be an array");
       else for (size_t i = 0; i < it->size(); ++i) read_parameter((*it)[i], "/parameters/" + std::to_string(i), g);
+      check_applies(g);
     }
     read_templates(root);
     if (auto it = root.find("resources"); it != root.end()) {

@@ -90,7 +90,28 @@ Status check_param_value(const ParamDesc& desc, const ParamValue& value) {
     e.where = desc.name;
     return e;
   }
+  if (desc.has_step() && nearest_step_value(desc, std::get<int>(value)) != std::get<int>(value)) {
+    const long long base = static_cast<long long>(desc.min);
+    std::ostringstream valid;
+    if (desc.step == 2) valid << "must be " << (base % 2 != 0 ? "odd" : "even") << "; valid: ";
+    else valid << "must be " << base << " + k * " << desc.step << "; valid: ";
+    valid << base << ", " << base + desc.step << ", " << base + 2 * desc.step << ", ...";
+    if (desc.has_range()) valid << ", " << nearest_step_value(desc, static_cast<int>(desc.max) - desc.step / 2);
+    Error e = make_error("parameter '" + desc.name + "' = " + param_value_to_string(value) + " " + valid.str());
+    e.where = desc.name;
+    return e;
+  }
   return {};
+}
+
+int nearest_step_value(const ParamDesc& desc, int value) {
+  if (!desc.has_step()) return value;
+  const long long base = static_cast<long long>(desc.min);
+  const long long offset = static_cast<long long>(value) - base;
+  // Floor division, then round half up: 4 with steps of 2 from 1 -> 5.
+  long long k = offset >= 0 ? offset / desc.step : -((-offset + desc.step - 1) / desc.step);
+  if (offset - k * desc.step >= (desc.step + 1) / 2) ++k;
+  return static_cast<int>(base + k * desc.step);
 }
 
 Result<ParamValue> parse_param_value(const ParamDesc& desc, std::string_view text) {

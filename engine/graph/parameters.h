@@ -40,8 +40,17 @@ struct ParamDesc {
   std::string description;  // one line, shown as the UI tooltip and in `--help`
   bool structural = false;  // true: changing it recompiles the graph
   std::vector<std::string> options;  // enumeration values
+  // Integers only: valid values are min + k * step (step 2 from an odd min = odd sizes of a
+  // kernel centred on a pixel). 0 = every integer. Checked like the range, so a UI offers only
+  // valid values and a bad one is refused when set rather than by a pass every frame.
+  int step = 0;
+  // A condition (condition.h syntax) on the graph's parameters, structural or not, under which
+  // this parameter has an effect ("$kernel == \"vogel\""); empty = always. For switches inside
+  // one pass, which the graph's `enabled` conditions cannot show; the sandbox greys the widget out.
+  std::string applies;
 
   bool has_range() const { return min != 0.0 || max != 0.0; }
+  bool has_step() const { return type == ParamType::integer && step > 1; }
 };
 
 const char* param_type_name(ParamType type);
@@ -49,6 +58,9 @@ const char* param_type_name(ParamType type);
 std::string param_value_to_string(const ParamValue& value);
 // Does `value` fit `desc` (type, range, enum option)? The error says what was expected.
 Status check_param_value(const ParamDesc& desc, const ParamValue& value);
+// The valid value nearest `value` for an integer parameter with a step (ties go up); `value`
+// itself otherwise. The range is not applied.
+int nearest_step_value(const ParamDesc& desc, int value);
 // Parses text as a value of desc.type ("true"/"false"/"1"/"0", integer, real, option name).
 Result<ParamValue> parse_param_value(const ParamDesc& desc, std::string_view text);
 

@@ -96,6 +96,14 @@ std::string disagreement(const ParamDesc& pass, const ParamDesc& graph) {
       return "it allows " + range_text(graph.min, graph.max) + ", the pass type accepts " +
              range_text(pass.min, pass.max);
   }
+  if (pass.has_step()) {
+    // Every value the graph allows must be one of the pass type's steps.
+    const bool same_grid = graph.has_step() && graph.step % pass.step == 0 &&
+                           nearest_step_value(pass, static_cast<int>(graph.min)) == static_cast<int>(graph.min);
+    if (!same_grid)
+      return "it allows values off the pass type's steps of " + std::to_string(pass.step) + " from " +
+             std::to_string(static_cast<long long>(pass.min)) + " (declare \"step\" in the parameter)";
+  }
   if (!pass.unit.empty() && !graph.unit.empty() && pass.unit != graph.unit)
     return "its unit is '" + graph.unit + "', the pass type's is '" + pass.unit + "'";
   return "";

@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 #include <tiny_gltf.h>
 
+#include "scene/framing.h"
 #include "scene/gltf_accessors.h"
 
 namespace penumbra::scene {
@@ -304,6 +305,18 @@ Result<Scene> load_gltf(const std::string& path) {
       if (!l) return l.error();
       scene.lights.push_back(std::move(*l));
     }
+    if (node.camera >= 0 && static_cast<size_t>(node.camera) < model.cameras.size()) {
+      const tinygltf::Camera& cam = model.cameras[static_cast<size_t>(node.camera)];
+      if (cam.type == "perspective") {
+        const auto& p = cam.perspective;
+        scene.cameras.push_back({cam.name.empty() ? node.name : cam.name,
+                                 camera_from_node(world, static_cast<float>(p.yfov), static_cast<float>(p.znear),
+                                                  static_cast<float>(p.zfar))});
+      } else {
+        spdlog::warn("{}: node {} '{}': {} camera ignored (only perspective cameras are offered)", path, ni,
+                     node.name, cam.type);
+      }
+    }
     for (int child : node.children)
       if (Status s = visit(child, world, depth + 1); !s) return s;
     return {};
@@ -325,8 +338,10 @@ Result<Scene> load_gltf(const std::string& path) {
     spdlog::warn("{}: the scene's bounding sphere has radius {:g} world units, outside [{:g}, {:g}]; "
                  "rendering it scaled by {:g} (radius {:g})", path, original_radius, kMinSceneRadius,
                  kMaxSceneRadius, s, scene.bounds.radius());
-  scene.camera = frame_bounds(scene.bounds);
-  scene.light = directional_light_for(scene.bounds, glm::vec3(-0.35f, -1.0f, -0.45f), 0.04f);
+  scene.camera = fit_camera(scene.bounds, 16.0f / 9.0f);
+  // The file's own light when it has one, else one that throws the shadows towards the camera.
+  if (std::optional<Light> own = file_light(scene)) scene.light = *own;
+  else scene.light = default_light(scene.bounds, scene.camera.forward());
   return scene;
 }
 

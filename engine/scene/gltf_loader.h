@@ -12,8 +12,11 @@
 // (glTF lights shine down the node's local -Z), colour, intensity (copied as is: lux for
 // directional, candela otherwise), range and cone angles; size 0 (punctual). A light index out
 // of range or an unknown type is an Error naming the node.
-// Ignored: skins, animations, cameras, other textures (normal, metal-rough, ...), samplers
-// (wrap = repeat is assumed).
+// Cameras: every perspective camera a node of the default scene places becomes a SceneCamera
+// (Scene::cameras; looking down the node's -Z, roll dropped); orthographic ones are skipped with
+// a warning.
+// Ignored: skins, animations, other textures (normal, metal-rough, ...), samplers (wrap = repeat
+// is assumed).
 //
 //   Result<Scene> s = load_gltf("assets/Fox/Fox.gltf");
 //   if (!s) { spdlog::error("{}", s.error().to_string()); return s.error().exit_code(); }
@@ -32,8 +35,10 @@ inline constexpr size_t kMaxNodeVisits = 1000000;
 inline constexpr size_t kMaxInstances = 100000;
 
 // Every Error carries `file` = path; `where` names the mesh/primitive/accessor at fault.
-// The default camera frames the bounds; the default light is a directional light from above at
-// an angle whose emitter diameter is 4% of the scene's bounding-sphere diameter.
+// The default camera is fitted to the bounds (framing.h, 16:9; staging.h refits it to the
+// frame's aspect); the default light is the file's own (framing.h file_light) or else one placed
+// so the shadows fall towards the camera (default_light). No ground plane is added here: that
+// is staging's choice (staging.h).
 Result<Scene> load_gltf(const std::string& path);
 
 }  // namespace penumbra::scene

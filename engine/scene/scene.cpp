@@ -46,6 +46,11 @@ float fit_scene_scale(Scene& scene) {
     l.light.position *= s;
     l.range *= s;
   }
+  for (SceneCamera& c : scene.cameras) {
+    c.camera.position *= s;
+    c.camera.near_plane *= s;
+    c.camera.far_plane *= s;
+  }
   scene.bounds = compute_bounds(scene);
   return s;
 }

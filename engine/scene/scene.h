@@ -79,6 +79,13 @@ struct SceneLight {
   float inner_cone_angle = 0.0f;  // spot: glTF innerConeAngle, radians (light.spot_angle is the outer)
 };
 
+// A camera a glTF file places (a node with a perspective camera): a view tools offer besides
+// the fitted one (staging.h).
+struct SceneCamera {
+  std::string name;
+  Camera camera;  // world-space, from the node; clip planes as in the file (zfar absent: 1e4 x near)
+};
+
 struct Scene {
   std::string name;
   std::vector<Mesh> meshes;
@@ -89,6 +96,7 @@ struct Scene {
   Camera camera;         // default view
   Light light;           // default light
   std::vector<SceneLight> lights;  // lights placed by a glTF file (KHR_lights_punctual), in node order
+  std::vector<SceneCamera> cameras;  // cameras placed by a glTF file, in node order
   std::string source_file;  // empty for built-in scenes
 
   // Triangles drawn (instances x mesh triangles).
@@ -101,11 +109,12 @@ Bounds compute_bounds(const Scene& scene);
 // Scenes whose bounding sphere is outside [kMinSceneRadius, kMaxSceneRadius] world units are
 // scaled uniformly to kScaledSceneRadius: float depth, bias and the fitted camera and light stop
 // working far outside it (a model in 1e30 units rendered as an empty frame). Returns the factor
-// applied (1 when none was needed); instances, placed lights and `bounds` follow it.
+// applied (1 when none was needed); instances, placed lights and cameras and `bounds` follow it.
 inline constexpr float kMinSceneRadius = 1e-3f, kMaxSceneRadius = 1e5f, kScaledSceneRadius = 10.0f;
 float fit_scene_scale(Scene& scene);
 
-// A camera framing `bounds` from the front-above (+Z, +Y side), whole box in view.
+// A camera framing `bounds` from the front-above (+Z, +Y side), whole box in view. (glTF scenes
+// use framing.h's fit_camera, which fits the box rather than its bounding sphere.)
 Camera frame_bounds(const Bounds& bounds, float fov_y_radians = glm::radians(50.0f));
 
 }  // namespace penumbra::scene

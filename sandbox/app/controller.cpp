@@ -1,5 +1,7 @@
 #include "app/controller.h"
 
+#include "app/inspector.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,21 +11,13 @@
 #include "util/file_write.h"
 #include "util/file_read.h"
 #include "plugin/frame_graph.h"
+#include "scene/ground_plane.h"
 #include "scene/load_scene.h"
 #include "gl/debug_output.h"
 #include "util/png.h"
 
 namespace penumbra::sandbox {
 
-namespace {
-metrics::MaskImage first_channel(const gl::Texture& t, int channel) {
-  metrics::MaskImage m(t.width(), t.height());
-  std::vector<float> texels = t.read();
-  const int n = t.info().channels;
-  for (size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = texels[i * n + channel];
-  return m;
-}
-}  // namespace
 
 SandboxController::SandboxController(const plugin::TechniqueRegistry& registry,
                                      const exec::PassLibrary& library)
@@ -54,12 +48,48 @@ Status SandboxController::init(const std::string& scene, const std::string& tech
 // --- scene, camera, light ---------------------------------------------------------------------
 
 Status SandboxController::load_scene(const std::string& name_or_path) {
+  scene::StagingOptions staging = staging_;
+  if (!scene_name_.empty() && name_or_path != scene_name_) {
+    staging.camera = {};
+    staging.light_direction.reset();
+    staging.light_size.reset();
+  }
+  staging.aspect = height_ > 0 ? static_cast<float>(width_) / static_cast<float>(height_) : staging.aspect;
   Result<scene::Scene> loaded = scene::load_scene(name_or_path);
   if (!loaded) return note(loaded.error());
+  if (Status s = scene::stage_scene(*loaded, staging); !s) return note(s);
   primary_->set_scene(*loaded);
   if (secondary_) secondary_->set_scene(*loaded);
   scene_name_ = name_or_path;
+  staging_ = staging;
   return note({});
+}
+
+Status SandboxController::set_ground(bool on) {
+  const bool was = staging_.ground;
+  staging_.ground = on;
+  if (scene_name_.empty()) return note({});
+  Status s = load_scene(scene_name_);
+  if (!s) staging_.ground = was;
+  return s;
+}
+
+Status SandboxController::set_camera_choice(const scene::CameraChoice& choice) {
+  const scene::CameraChoice was = staging_.camera;
+  staging_.camera = choice;
+  if (scene_name_.empty()) return note({});
+  Status s = load_scene(scene_name_);
+  if (!s) staging_.camera = was;
+  return s;
+}
+
+const std::vector<scene::SceneCamera>& SandboxController::file_cameras() const {
+  static const std::vector<scene::SceneCamera> kNone;
+  return primary_->has_scene() ? primary_->scene().cameras : kNone;
+}
+
+bool SandboxController::ground_added() const {
+  return primary_->has_scene() && scene::has_added_ground_plane(primary_->scene());
 }
 
 void SandboxController::move_camera(const glm::vec3& axes, float dt, bool fast) {
@@ -246,35 +276,20 @@ Status SandboxController::view_resource(const std::string& name) {
   return note({});
 }
 
-std::string SandboxController::default_compare_partner() const {
-  std::vector<std::string> names = registry_.names();
-  if (registry_.find("reference")) return "reference";
-  auto it = std::find(names.begin(), names.end(), primary_->technique());
-  if (it == names.end() || names.size() == 1) return primary_->technique();
-  ++it;
-  return it == names.end() ? names.front() : *it;
-}
-
 Status SandboxController::configure_secondary() {
   if (!secondary_) secondary_ = std::make_unique<plugin::TechniqueSession>(registry_, library_);
-  if (!secondary_->has_scene()) secondary_->set_scene(primary_->scene());
-  if (Status s = secondary_->resize(width_, height_); !s) return s;
-  if (Status s = secondary_->set_shadow_size(primary_->settings().shadow_size); !s) return s;
-  secondary_->compile_options().no_reuse = primary_->compile_options().no_reuse;
-  secondary_->compile_options().extended_lifetimes = primary_->compile_options().extended_lifetimes;
-  secondary_->executor().options().immediate = primary_->executor().options().immediate;
-  if (secondary_->technique() != compare_.with) return secondary_->set_technique(compare_.with);
-  return {};
+  return configure_partner(*secondary_, *primary_, compare_.with, width_, height_);
 }
 
 Status SandboxController::set_compare(bool enabled, const std::string& with) {
   if (!enabled) {
     compare_.enabled = false;
     compare_.stats.reset();
+    compare_.rmse_history.clear();
     secondary_.reset();  // frees its textures: compare mode costs nothing when off
     return note({});
   }
-  std::string partner = with.empty() ? (compare_.with.empty() ? default_compare_partner() : compare_.with)
+  std::string partner = with.empty() ? (compare_.with.empty() ? default_compare_partner(registry_, primary_->technique()) : compare_.with)
                                      : with;
   if (!registry_.find(partner)) return note(primary_->set_technique(partner));  // names valid ones
   std::string previous = compare_.with;
@@ -286,29 +301,11 @@ Status SandboxController::set_compare(bool enabled, const std::string& with) {
   }
   compare_.enabled = true;
   compare_.stats.reset();
+  compare_.rmse_history.clear();
   return note({});
 }
 
-void SandboxController::update_compare_stats() {
-  gl::Texture* a = primary_->executor().resource(plugin::kShadowMask);
-  gl::Texture* b = secondary_->executor().resource(plugin::kShadowMask);
-  gl::Texture* pos = primary_->executor().resource("gbuffer_position");
-  if (!a || !b || !pos) {
-    compare_.stats_error = "shadow_mask or gbuffer_position missing";
-    return;
-  }
-  metrics::MaskImage position_w = first_channel(*pos, 3);
-  metrics::CoverageMask coverage(position_w.pixels.size());
-  for (size_t i = 0; i < coverage.size(); ++i) coverage[i] = position_w.pixels[i] > 0.0f ? 1 : 0;
-  // The secondary plays the reference: RMSE of the primary against it.
-  Result<metrics::MaskErrors> e = metrics::compare_masks(first_channel(*a, 0), first_channel(*b, 0), coverage);
-  if (!e) {
-    compare_.stats_error = e.error().to_string();
-    return;
-  }
-  compare_.stats = *e;
-  compare_.stats_error.clear();
-}
+void SandboxController::update_compare_stats() { sandbox::update_compare_stats(compare_, *primary_, *secondary_); }
 
 // --- frames -----------------------------------------------------------------------------------
 
@@ -338,6 +335,18 @@ std::vector<Error> SandboxController::shader_errors() const {
 }
 
 Status SandboxController::render_frame() {
+  Status s = render_and_compose();
+  if (s) {
+    refused_.clear();
+  } else {
+    // Never leave the last good image up: the view shows that this frame was refused.
+    refused_ = s.error().to_string();
+    display_.show_refused();
+  }
+  return s;
+}
+
+Status SandboxController::render_and_compose() {
   auto now = std::chrono::steady_clock::now();
   if (now - last_reload_ > std::chrono::milliseconds(500)) {
     reload_shaders();
@@ -354,66 +363,8 @@ Status SandboxController::render_frame() {
   }
   ++frames_;
 
-  // Compose: base layer (colour, split or error map), then the viewed resource.
-  display_.begin();
-  DisplayPass::Layer base;
-  base.viewport = {0, 0, width_, height_};
-  gl::Texture* color_a = primary_->executor().resource(plugin::kColor);
-  if (!color_a) return make_error("the frame has no 'color' resource", ErrorKind::internal);
-  if (comparing && compare_.view == CompareState::View::error) {
-    gl::Texture* a = primary_->executor().resource(plugin::kShadowMask);
-    gl::Texture* b = secondary_->executor().resource(plugin::kShadowMask);
-    gl::Texture* pos = primary_->executor().resource("gbuffer_position");
-    if (!a || !b || !pos) return make_error("compare: shadow_mask or gbuffer_position missing", ErrorKind::internal);
-    if (Status s = display_.difference(*a, *b, *pos); !s) return s;
-    base.texture = &display_.difference_texture();
-    base.map = ViewerSettings::Map::heat;
-    base.range = {0.0f, std::max(compare_.error_max, 1e-4f)};
-    base.coverage_in_g = true;
-    if (Status s = display_.draw(base); !s) return s;
-  } else if (comparing) {
-    gl::Texture* color_b = secondary_->executor().resource(plugin::kColor);
-    int split_px = std::clamp(static_cast<int>(std::lround(compare_.split * width_)), 0, width_);
-    DisplayPass::Layer left = base, right = base;
-    left.texture = color_a;
-    left.viewport = {0, 0, split_px, height_};
-    left.uv_rect = {0.0f, 0.0f, float(split_px) / width_, 1.0f};
-    right.texture = color_b ? color_b : color_a;
-    right.viewport = {split_px, 0, width_ - split_px, height_};
-    right.uv_rect = {float(split_px) / width_, 0.0f, float(width_ - split_px) / width_, 1.0f};
-    if (split_px > 0)
-      if (Status s = display_.draw(left); !s) return s;
-    if (split_px < width_)
-      if (Status s = display_.draw(right); !s) return s;
-  } else {
-    base.texture = color_a;
-    if (Status s = display_.draw(base); !s) return s;
-  }
-
-  if (!viewer_.resource.empty()) {
-    if (gl::Texture* t = primary_->executor().resource(viewer_.resource)) {
-      DisplayPass::Layer v;
-      v.texture = t;
-      v.map = viewer_.map;
-      v.channel = viewer_.channel;
-      v.range = {viewer_.min, viewer_.max};
-      v.linearize_depth = viewer_.linearize_depth && t->info().is_depth && t->width() == width_ &&
-                          t->height() == height_;
-      v.near_far = {camera().near_plane, camera().far_plane};
-      if (viewer_.placement == ViewerSettings::Placement::full) {
-        v.viewport = {0, 0, width_, height_};
-      } else {
-        // Bottom-right, a third of the window, the texture's aspect kept.
-        int w = std::max(width_ / 3, 1);
-        int h = std::max(static_cast<int>(std::lround(float(w) * t->height() / std::max(t->width(), 1))), 1);
-        h = std::min(h, height_);
-        v.viewport = {width_ - w - 8, 8, w, h};
-      }
-      if (Status s = display_.draw(v); !s) return s;
-    }
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return {};
+  if (viewer_.auto_range && !viewer_.resource.empty() && frames_ % 15 == 1) (void)apply_auto_range(*this);
+  return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr, compare_, viewer_, width_, height_});
 }
 
 Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) {
@@ -457,15 +408,7 @@ Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) 
 }
 
 Status SandboxController::save_presentation_png(const std::string& path) const {
-  const gl::Texture& t = display_.target();
-  std::vector<unsigned char> bottom_up(static_cast<size_t>(t.width()) * t.height() * 4);
-  glGetTextureImage(t.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottom_up.size()),
-                    bottom_up.data());
-  std::vector<unsigned char> top_down(bottom_up.size());
-  const size_t row = static_cast<size_t>(t.width()) * 4;
-  for (int y = 0; y < t.height(); ++y)
-    std::copy_n(&bottom_up[(t.height() - 1 - y) * row], row, &top_down[y * row]);
-  return write_png_rgba8(path, t.width(), t.height(), top_down);
+  return save_target_png(display_, path);
 }
 
 Status SandboxController::check_gl_errors(const std::string& when) {

@@ -24,24 +24,17 @@
 #include <string>
 #include <vector>
 
+#include "app/compare.h"
 #include "app/display.h"
+#include "app/frame_composer.h"
 #include "exec/pass.h"
 #include "metrics/mask_metrics.h"
 #include "plugin/technique.h"
 #include "plugin/technique_session.h"
+#include "scene/staging.h"
 
 namespace penumbra::sandbox {
 
-struct CompareState {
-  bool enabled = false;
-  std::string with;                 // secondary technique
-  enum class View { split, error } view = View::split;
-  float split = 0.5f;               // split position, fraction of the width (left = primary)
-  float error_max = 0.25f;          // |a - b| shown white in the heat map
-  int stats_every = 10;             // frames between RMSE read-backs
-  std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
-  std::string stats_error;
-};
 
 class SandboxController {
  public:
@@ -52,9 +45,25 @@ class SandboxController {
   Status init(const std::string& scene, const std::string& technique, int width, int height);
 
   // --- scene, camera, light ---------------------------------------------------------------
-  // A built-in name or a glTF path. On failure the previous scene stays.
+  // A built-in name or a glTF path, staged (scene/staging.h) for the frame's aspect: a glTF model
+  // gets a fitted camera, its own light or one that shows the shadows, and a ground plane when it
+  // has no floor and the ground switch is on. A different scene than the current one drops the
+  // camera pose and light overrides of the staging options (they were meant for the previous
+  // one); the ground switch stays. On failure the previous scene stays.
   Status load_scene(const std::string& name_or_path);
   const std::string& scene_name() const { return scene_name_; }
+  // The staging options the next load uses (the command line's --camera, --light-dir,
+  // --light-size, --ground); set before init().
+  void set_staging(const scene::StagingOptions& options) { staging_ = options; }
+  const scene::StagingOptions& staging() const { return staging_; }
+  // The ground switch: reloads the current scene with or without the added plane.
+  Status set_ground(bool on);
+  // Fitted camera, or one the glTF file places (Kind::file, by index or name): reloads and
+  // restages the current scene with that camera.
+  Status set_camera_choice(const scene::CameraChoice& choice);
+  // Cameras the current glTF places (empty for built-in scenes).
+  const std::vector<scene::SceneCamera>& file_cameras() const;
+  bool ground_added() const;
   scene::Camera& camera() { return primary_->camera(); }
   scene::Light& light() { return primary_->light(); }
   // Free-fly camera: `axes` = (right, up, forward) in [-1, 1], dt in seconds; fast = Shift.
@@ -93,12 +102,17 @@ class SandboxController {
 
   // --- resource viewer, compare -------------------------------------------------------------
   ViewerSettings& viewer() { return viewer_; }
+  const DisplayPass& display() const { return display_; }
   // Keeps `name` alive in the primary plan (recompiles) and shows it; "" turns the viewer off.
   Status view_resource(const std::string& name);
   CompareState& compare() { return compare_; }
   // `with` empty: "reference" when registered, else the technique after the primary.
   Status set_compare(bool enabled, const std::string& with = "");
   void set_compare_view(CompareState::View view) { compare_.view = view; }
+  // Reads the statistics back from the last rendered frame now (scripts' `metrics`, exports).
+  void refresh_compare_stats() {
+    if (compare_.enabled && secondary_ && frames_ > 0) update_compare_stats();
+  }
 
   // --- frames -------------------------------------------------------------------------------
   Status resize(int width, int height);
@@ -108,6 +122,9 @@ class SandboxController {
   // (every ~0.5 s) reloads changed shaders.
   Status render_frame();
   std::uint64_t frames() const { return frames_; }
+  // The error of the last frame when it was refused ("" after a good one). A refused frame's
+  // presentation is DisplayPass::kRefusedColor, never the previous image.
+  const std::string& refused() const { return refused_; }
   GLuint presentation_framebuffer() const { return display_.framebuffer(); }
   Status save_presentation_png(const std::string& path) const;
   // Shader compile errors of every program in use (technique passes and display), with file:line.
@@ -132,8 +149,8 @@ class SandboxController {
 
  private:
   Status configure_secondary();
+  Status render_and_compose();
   void update_compare_stats();
-  std::string default_compare_partner() const;
 
   const plugin::TechniqueRegistry& registry_;
   mutable std::map<std::string, std::string> descriptions_;
@@ -141,12 +158,14 @@ class SandboxController {
   std::unique_ptr<plugin::TechniqueSession> primary_;
   std::unique_ptr<plugin::TechniqueSession> secondary_;
   std::string scene_name_;
+  scene::StagingOptions staging_;
   DisplayPass display_;
   ViewerSettings viewer_;
   CompareState compare_;
   int width_ = 0, height_ = 0;
   std::uint64_t frames_ = 0;
   std::string message_;
+  std::string refused_;
   std::chrono::steady_clock::time_point last_reload_ = std::chrono::steady_clock::now();
   std::function<void()> reload_hook_;
 };

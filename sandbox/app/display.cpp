@@ -42,6 +42,11 @@ Status DisplayPass::resize(int width, int height) {
   return framebuffer_->finish();
 }
 
+void DisplayPass::show_refused() const {
+  if (!framebuffer_) return;
+  glClearNamedFramebufferfv(framebuffer_->id(), GL_COLOR, 0, kRefusedColor);
+}
+
 void DisplayPass::begin() const {
   framebuffer_->bind();
   glDisable(GL_DEPTH_TEST);

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/view_mapping.h"
 #include "exec/shader_cache.h"
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
@@ -24,6 +25,10 @@ struct ViewerSettings {
   float min = 0.0f, max = 1.0f;  // value range mapped to [0, 1] (world units for linear depth)
   int channel = 0;               // grey/heat read this channel
   bool linearize_depth = true;   // screen-size depth -> view distance with the camera's near/far
+  bool auto_range = false;       // min/max follow the resource's values (every ~15 frames)
+  // Zoom and pan of what fills the frame: the final image (both sides of a compare split alike,
+  // so their zoom is synced) and a full-placement resource. The inset is never zoomed.
+  ViewZoom zoom;
 };
 
 const char* map_name(ViewerSettings::Map map);
@@ -49,6 +54,9 @@ class DisplayPass {
 
   // Binds the presentation target and clears it to dark grey.
   void begin() const;
+  // A refused frame: the whole target in kRefusedColor (the UI writes why on top).
+  static constexpr float kRefusedColor[4] = {0.35f, 0.04f, 0.06f, 1.0f};
+  void show_refused() const;
   Status draw(const Layer& layer);
   // difference.r = |a.r - b.r|, difference.g = receiver coverage (position.w > 0).
   Status difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& position);

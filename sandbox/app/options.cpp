@@ -2,12 +2,13 @@
 
 #include "cli/args.h"
 #include "cli/plugin_option.h"
+#include "cli/scene_option.h"
 
 namespace penumbra::sandbox {
 
 namespace {
 const std::vector<cli::OptionSpec>& specs() {
-  static const std::vector<cli::OptionSpec> s = {
+  static const std::vector<cli::OptionSpec> s = cli::with_scene_options({
       {"scene", true, false, "NAME|FILE", "built-in scene or glTF file (default showcase)"},
       {"technique", true, false, "T", "technique to start with (default: the first registered)"},
       {"size", true, false, "WxH", "window / frame size in pixels (default 1280x800)"},
@@ -20,7 +21,7 @@ const std::vector<cli::OptionSpec>& specs() {
        "write a script that visits every technique and parameter (for tests), then exit"},
       {"screenshot-dir", true, false, "DIR", "where the exhaustive script's screenshots go (default .)"},
       cli::plugin_dir_option_spec(),
-  };
+  });
   return s;
 }
 }  // namespace
@@ -28,7 +29,8 @@ const std::vector<cli::OptionSpec>& specs() {
 std::string sandbox_help() {
   return cli::format_help(
       "penumbra-sandbox [--scene NAME|FILE] [--technique T] [--size WxH] [--script FILE]\n"
-      "                        [--screenshot OUT.png] [--context glfw]",
+      "                        [--screenshot OUT.png] [--context glfw]\n"
+      "                        [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]",
       "Interactive soft-shadow sandbox: swap and tune techniques live, inspect every graph\n"
       "resource, compare two techniques or a technique against the reference.\n"
       "Controls: WASD move, right mouse drag look, Shift faster, Space light = view direction,\n"
@@ -67,6 +69,9 @@ Result<SandboxOptions> parse_sandbox_options(const std::vector<std::string>& arg
     if (!n) return n.error();
     o.shadow_size = *n;
   }
+  auto staging = cli::parse_scene_options(*args);
+  if (!staging) return staging.error();
+  o.staging = staging->staging;
   if (auto v = args->get("script")) o.script = *v;
   if (auto v = args->get("screenshot")) o.screenshot = *v;
   if (auto v = args->get("context")) {

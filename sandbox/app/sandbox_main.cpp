@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "app/controller.h"
+#include "app/layout.h"
 #include "app/options.h"
 #include "app/plugin_reload.h"
 #include "plugin/preset.h"
@@ -74,7 +75,8 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
   copts.kind = gl::ContextKind::glfw;
   if (!o.context.empty()) copts.kind = *gl::parse_context_kind(o.context);
   copts.want_window = true;
-  copts.width = o.width;
+  // A window holds the panel beside the frame: --size is the frame's (the viewport's) size.
+  copts.width = copts.kind == gl::ContextKind::glfw ? window_width_for(o.width, kDefaultPanelWidth) : o.width;
   copts.height = o.height;
   copts.title = "Penumbra sandbox";
   auto context = gl::create_context(copts);
@@ -82,6 +84,7 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
 
   SandboxController controller(registry, library);
   controller.set_reload_hook([&] { plugins.poll(controller, registry, library); });
+  controller.set_staging(o.staging);
   if (o.shadow_size)
     if (Status s = controller.session().set_shadow_size(*o.shadow_size); !s) return fail(s.error());
   if (Status s = controller.init(o.scene, o.technique, o.width, o.height); !s) return fail(s.error());

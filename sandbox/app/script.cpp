@@ -27,7 +27,8 @@ constexpr StepName kSteps[] = {
     {"shadow_size", StepKind::shadow_size}, {"wait", StepKind::wait},
     {"screenshot", StepKind::screenshot}, {"compare", StepKind::compare},
     {"view", StepKind::view},         {"resize", StepKind::resize},
-    {"expect_no_gl_error", StepKind::expect_no_gl_error},
+    {"expect_no_gl_error", StepKind::expect_no_gl_error}, {"ground", StepKind::ground},
+    {"metrics", StepKind::metrics},   {"inspect", StepKind::inspect},
 };
 
 std::string valid_step_names() {
@@ -103,15 +104,17 @@ void parse_body(ScriptStep& s, const json& v) {
   switch (s.kind) {
     case StepKind::scene: s.text = need_string(v, "scene"); break;
     case StepKind::technique: s.text = need_string(v, "technique"); break;
-    case StepKind::screenshot: {
-      s.text = need_string(v, "screenshot");
-      if (s.text.empty()) problem("screenshot: the path is empty");
+    case StepKind::screenshot:
+    case StepKind::metrics: {
+      const std::string key = step_kind_name(s.kind);
+      s.text = need_string(v, key);
+      if (s.text.empty()) problem(key + ": the path is empty");
       // Checked before any frame runs: a long script must not fail at its last step.
       const std::filesystem::path dir = std::filesystem::path(s.text).parent_path();
       std::error_code ec;
       if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
-        problem("screenshot: directory '" + shortened(dir.string()) + "' does not exist");
-      if (std::filesystem::is_directory(s.text, ec)) problem("screenshot: '" + shortened(s.text) + "' is a directory");
+        problem(key + ": directory '" + shortened(dir.string()) + "' does not exist");
+      if (std::filesystem::is_directory(s.text, ec)) problem(key + ": '" + shortened(s.text) + "' is a directory");
       break;
     }
     case StepKind::reset:
@@ -131,7 +134,28 @@ void parse_body(ScriptStep& s, const json& v) {
     case StepKind::expect_no_gl_error:
       if (!v.is_boolean() || !v.get<bool>()) problem("expect_no_gl_error must be true, got " + echo(v));
       break;
+    case StepKind::inspect: {
+      only_keys(v, {"at", "out"}, "inspect");
+      if (!v.contains("at") || !v["at"].is_array() || v["at"].size() != 2)
+        problem("inspect.at must be [x, y] (frame pixel, origin top-left), got " + echo(v.value("at", json())));
+      s.inspect.x = need_int(v["at"][0], "inspect.at x (pixels)", 0, 16383);
+      s.inspect.y = need_int(v["at"][1], "inspect.at y (pixels)", 0, 16383);
+      s.inspect.out = v.contains("out") ? need_string(v["out"], "inspect.out") : "";
+      if (s.inspect.out.empty()) problem("inspect.out must name the JSON file to write");
+      break;
+    }
+    case StepKind::ground:
+      if (!v.is_boolean()) problem("ground must be true or false, got " + echo(v));
+      s.flag = v.get<bool>();
+      break;
     case StepKind::camera:
+      if (v.is_string()) {
+        const std::string c = v.get<std::string>();
+        if (c != "fit" && c != "file" && c.rfind("file:", 0) != 0)
+          problem("camera must be \"fit\", \"file\", \"file:NAME\" or an object, got " + echo(v));
+        s.camera.choice = c;
+        break;
+      }
       only_keys(v, {"position", "look_at", "yaw", "pitch"}, "camera");
       if (v.empty()) problem("camera: give at least one of position, look_at, yaw, pitch");
       if (v.contains("position")) s.camera.position = need_vec3(v["position"], "camera.position");
@@ -181,7 +205,21 @@ void parse_body(ScriptStep& s, const json& v) {
         s.view.resource = v.get<std::string>();
         break;
       }
-      only_keys(v, {"resource", "map", "placement", "min", "max", "channel"}, "view");
+      only_keys(v, {"resource", "map", "placement", "min", "max", "channel", "zoom", "center", "auto_range"}, "view");
+      if (v.contains("zoom")) {
+        s.view.zoom = need_number(v["zoom"], "view.zoom");
+        if (!(*s.view.zoom >= 1.0f && *s.view.zoom <= 64.0f)) problem("view.zoom must be in [1, 64], got " + echo(v["zoom"]));
+      }
+      if (v.contains("center")) {
+        const auto& a = v["center"];
+        if (!a.is_array() || a.size() != 2 || !a[0].is_number() || !a[1].is_number())
+          problem("view.center must be [u, v] (uv at the frame's middle), got " + echo(a));
+        s.view.center = glm::vec2(a[0].get<float>(), a[1].get<float>());
+      }
+      if (v.contains("auto_range")) {
+        if (!v["auto_range"].is_boolean()) problem("view.auto_range must be true or false, got " + echo(v["auto_range"]));
+        s.view.auto_range = v["auto_range"].get<bool>();
+      }
       if (v.contains("resource")) s.view.resource = need_string(v["resource"], "view.resource");
       if (v.contains("map")) {
         s.view.map = need_string(v["map"], "view.map");

@@ -24,11 +24,14 @@ namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error
+  resize, expect_no_gl_error, ground, metrics, inspect
 };
 const char* step_kind_name(StepKind kind);
 
 struct CameraStep {
+  // {"camera": "fit"} / {"camera": "file"} / {"camera": "file:NAME"}: restage the scene with the
+  // fitted camera or one the glTF places (the other fields are then unset).
+  std::optional<std::string> choice;
   std::optional<glm::vec3> position;
   std::optional<glm::vec3> look_at;  // world point; overrides yaw/pitch
   std::optional<float> yaw_deg, pitch_deg;
@@ -53,20 +56,32 @@ struct ViewStep {
   std::string placement; // "full" | "inset"; empty = unchanged
   std::optional<float> min, max;
   std::optional<int> channel;
+  std::optional<float> zoom;           // 1..64
+  std::optional<glm::vec2> center;     // uv at the frame's middle
+  std::optional<bool> auto_range;
+};
+
+// {"inspect": {"at": [x, y], "out": "p.json"}}: the pixel inspector's readout of frame pixel
+// (x, y) (origin top-left) written as JSON.
+struct InspectStep {
+  int x = 0, y = 0;
+  std::string out;
 };
 
 struct ScriptStep {
   StepKind kind = StepKind::wait;
   int index = 0;     // position in the script
   std::string source;  // the script file, named by errors
-  std::string text;  // scene, technique, screenshot path, reset target ("all" or a parameter)
+  std::string text;  // scene, technique, screenshot or metrics path, reset target ("all" or a parameter)
   std::vector<std::pair<std::string, std::string>> assignments;  // set: name -> value text
   int number = 0;    // wait frames, shadow size (texels)
+  bool flag = false;  // ground: the switch
   int width = 0, height = 0;  // resize (pixels)
   CameraStep camera;
   LightStep light;
   CompareStep compare;
   ViewStep view;
+  InspectStep inspect;
 };
 
 // Limits of a script (docs/sandbox.md): steps, and nesting of any value.

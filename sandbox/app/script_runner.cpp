@@ -1,5 +1,8 @@
 #include "app/script_runner.h"
 
+#include "app/compare_metrics.h"
+#include "app/inspector.h"
+
 #include <cstdio>
 #include <utility>
 
@@ -44,7 +47,16 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
         if (Status s = c.set_param(name, value); !s) return s;
       return {};
     case StepKind::reset: return c.reset_param(step.text);
+    case StepKind::ground: return c.set_ground(step.flag);
+    case StepKind::metrics: return write_metrics(c, step.text);
+    case StepKind::inspect: return write_inspection(c, step.inspect.x, step.inspect.y, step.inspect.out);
     case StepKind::camera:
+      if (step.camera.choice) {
+        scene::CameraChoice choice;
+        choice.kind = *step.camera.choice == "fit" ? scene::CameraChoice::Kind::fitted : scene::CameraChoice::Kind::file;
+        if (step.camera.choice->size() > 5) choice.file_camera = step.camera.choice->substr(5);
+        return c.set_camera_choice(choice);
+      }
       return c.set_camera(step.camera.position, step.camera.look_at, step.camera.yaw_deg,
                           step.camera.pitch_deg);
     case StepKind::light:
@@ -76,6 +88,13 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
       if (step.view.min) v.min = *step.view.min;
       if (step.view.max) v.max = *step.view.max;
       if (step.view.channel) v.channel = *step.view.channel;
+      if (step.view.zoom) v.zoom.zoom = *step.view.zoom;
+      if (step.view.center) v.zoom.center = *step.view.center;
+      v.zoom = clamped(v.zoom);
+      if (step.view.auto_range) {
+        v.auto_range = *step.view.auto_range;
+        if (v.auto_range) (void)apply_auto_range(c);  // again after the next frames
+      }
       return {};
     }
     case StepKind::resize: return resize_(step.width, step.height);

@@ -5,7 +5,12 @@
 
 #include <imgui.h>
 
+#include "app/compare_metrics.h"
+#include "app/inspector.h"
+#include "app/param_applicability.h"
+#include "app/viewport_overlay.h"
 #include "app/widget_spec.h"
+#include "metrics/heat_map.h"
 #include "scene/builtin_scenes.h"
 
 namespace penumbra::sandbox {
@@ -28,10 +33,13 @@ std::string mib(std::uint64_t bytes) {
 // Widgets ignore returned Statuses on purpose: the controller shows every error in message().
 
 // One parameter: the widget its description asks for, then a reset button.
+// Parameters with no effect under the current settings are disabled, the reason in the tooltip.
 void parameter_widget(SandboxController& c, const graph::ParamDesc& d) {
   const WidgetSpec w = widget_for(d);
   const graph::ParameterSet& params = c.session().params();
+  const Applicability a = param_applicability(d, params, c.session().graph(), c.session().plan());
   ImGui::PushID(d.name.c_str());
+  if (!a.applies) ImGui::BeginDisabled();
   switch (w.kind) {
     case WidgetKind::checkbox: {
       bool v = params.get_bool(d.name);
@@ -44,9 +52,11 @@ void parameter_widget(SandboxController& c, const graph::ParamDesc& d) {
       bool changed = w.kind == WidgetKind::slider_int
                          ? ImGui::SliderInt(w.label.c_str(), &v, int(w.min), int(w.max))
                          : ImGui::DragInt(w.label.c_str(), &v, float(w.drag_speed));
+      // Only valid values are offered: a step (odd sizes) snaps to the nearest valid one.
+      v = valid_int_value(d, v);
       // Structural ones recompile on every step of a drag: compiling is CPU-cheap and the pool
       // hands the same textures back.
-      if (changed) (void)c.set_param_value(d.name, v);
+      if (changed && v != params.get_int(d.name)) (void)c.set_param_value(d.name, v);
       break;
     }
     case WidgetKind::slider_float:
@@ -68,7 +78,13 @@ void parameter_widget(SandboxController& c, const graph::ParamDesc& d) {
       break;
     }
   }
-  tooltip(w.tooltip);
+  if (!a.applies) {
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+      ImGui::SetTooltip("%s\n\n%s", a.reason.c_str(), w.tooltip.c_str());
+  } else {
+    tooltip(w.tooltip);
+  }
   ImGui::SameLine();
   if (ImGui::SmallButton("reset")) (void)c.reset_param(d.name);
   tooltip("back to the default " + graph::param_value_to_string(d.default_value));
@@ -86,6 +102,29 @@ void scene_panel(SandboxController& c, UiState& ui) {
   ImGui::SameLine();
   if (ImGui::Button("open")) (void)c.load_scene(ui.scene_path);
   tooltip("load a .gltf/.glb file; on failure the current scene stays");
+  bool ground = c.staging().ground;
+  if (ImGui::Checkbox("ground plane", &ground)) (void)c.set_ground(ground);
+  tooltip(c.ground_added() ? "a plane was added under the model (it has no floor of its own); reloads the scene"
+                           : "adds a plane under models that have no floor of their own (reloads the scene); "
+                             "this scene has its own or the switch is off");
+  const auto& cams = c.file_cameras();
+  const scene::CameraChoice& choice = c.staging().camera;
+  std::string current = choice.kind == scene::CameraChoice::Kind::scene ? "default" : "fitted to the model";
+  if (choice.kind == scene::CameraChoice::Kind::file)
+    current = "file: " + (choice.file_camera.empty() ? std::string("0") : choice.file_camera);
+  if (ImGui::BeginCombo("view", current.c_str())) {
+    if (ImGui::Selectable("fitted to the model", choice.kind != scene::CameraChoice::Kind::file))
+      (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::fitted});
+    for (size_t i = 0; i < cams.size(); ++i) {
+      const std::string label = "file: " + std::to_string(i) + (cams[i].name.empty() ? "" : " " + cams[i].name);
+      if (ImGui::Selectable(label.c_str(), choice.kind == scene::CameraChoice::Kind::file &&
+                                               choice.file_camera == std::to_string(i)))
+        (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::file, .file_camera = std::to_string(i)});
+    }
+    ImGui::EndCombo();
+  }
+  tooltip(cams.empty() ? "the camera fitted to the model's bounds (this scene places no camera of its own)"
+                       : "the camera fitted to the model's bounds, or one the glTF file places");
   const scene::Camera& cam = c.camera();
   ImGui::TextDisabled("camera (%.2f, %.2f, %.2f) yaw %.0f pitch %.0f deg", cam.position.x, cam.position.y,
                       cam.position.z, glm::degrees(cam.yaw), glm::degrees(cam.pitch));
@@ -137,13 +176,13 @@ void technique_panel(SandboxController& c, UiState& ui) {
   ImGui::TextDisabled("compiles: %d", s.compile_count());
   ImGui::InputText("preset", ui.preset_path, sizeof ui.preset_path);
   if (ImGui::Button("save preset")) {
-    Status st = c.save_preset(ui.preset_path);
-    ui.host_message = st ? std::string("saved ") + ui.preset_path : st.error().to_string();
+    Status st = c.note(c.save_preset(ui.preset_path));
+    if (st) ui.post(std::string("saved ") + ui.preset_path, ImGui::GetTime());
   }
   ImGui::SameLine();
   if (ImGui::Button("load preset")) {
     Status st = c.load_preset(ui.preset_path);
-    ui.host_message = st ? std::string("loaded ") + ui.preset_path : "";
+    if (st) ui.post(std::string("loaded ") + ui.preset_path, ImGui::GetTime());
   }
 }
 
@@ -186,6 +225,34 @@ void graph_panel(SandboxController& c) {
   tooltip("glFinish and a GL error check after every pass");
 }
 
+// The legend of the viewer's colour map: the gradient from min to max, labelled.
+void colour_bar(const ViewerSettings& v) {
+  if (v.resource.empty() || v.map == ViewerSettings::Map::color) return;
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float w = ImGui::GetContentRegionAvail().x * 0.9f, h = 12.0f;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  constexpr int kSteps = 32;
+  auto colour = [&](float t) -> ImU32 {
+    if (v.map == ViewerSettings::Map::grey) {
+      const int g = static_cast<int>(t * 255.0f);
+      return IM_COL32(g, g, g, 255);
+    }
+    const glm::u8vec3 c = metrics::heat_color(t);
+    return IM_COL32(c.r, c.g, c.b, 255);
+  };
+  for (int i = 0; i < kSteps; ++i) {
+    const float t0 = float(i) / kSteps, t1 = float(i + 1) / kSteps;
+    dl->AddRectFilledMultiColor(ImVec2(at.x + t0 * w, at.y), ImVec2(at.x + t1 * w, at.y + h), colour(t0), colour(t1),
+                                colour(t1), colour(t0));
+  }
+  ImGui::Dummy(ImVec2(w, h));
+  ImGui::Text("%.4g", v.min);
+  ImGui::SameLine(w * 0.5f - 20.0f);
+  ImGui::Text("%.4g", 0.5 * (double(v.min) + double(v.max)));
+  ImGui::SameLine(std::max(w - 50.0f, 0.0f));
+  ImGui::Text("%.4g", v.max);
+}
+
 void viewer_panel(SandboxController& c) {
   if (!ImGui::CollapsingHeader("Resource viewer")) return;
   ViewerSettings& v = c.viewer();
@@ -201,13 +268,27 @@ void viewer_panel(SandboxController& c) {
   int place = static_cast<int>(v.placement);
   if (ImGui::Combo("placement", &place, "full screen\0inset\0"))
     v.placement = static_cast<ViewerSettings::Placement>(place);
-  ImGui::DragFloatRange2("range", &v.min, &v.max, 0.005f, 0.0f, 0.0f, "min %.3f", "max %.3f");
+  ImGui::DragFloatRange2("range", &v.min, &v.max, 0.005f, 0.0f, 0.0f, "min %.4g", "max %.4g");
+  if (ImGui::Button("auto range")) (void)c.note(apply_auto_range(c));
+  tooltip("min/max of the viewed channel (view distance for screen depth, background skipped)");
+  ImGui::SameLine();
+  ImGui::Checkbox("follow", &v.auto_range);
+  tooltip("keep the range at the resource's min/max (every 15 frames)");
+  colour_bar(v);
   ImGui::SliderInt("channel", &v.channel, 0, 3);
+  float zoom = v.zoom.zoom;
+  if (ImGui::SliderFloat("zoom", &zoom, 1.0f, kMaxZoom, "%.2gx", ImGuiSliderFlags_Logarithmic)) {
+    v.zoom.zoom = zoom;
+    v.zoom = clamped(v.zoom);
+  }
+  tooltip("mouse wheel over the view zooms about the cursor, middle-drag pans; the compare split's sides zoom together");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("1:1")) v.zoom = {};
   ImGui::Checkbox("linearise depth", &v.linearize_depth);
   tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
 }
 
-void compare_panel(SandboxController& c) {
+void compare_panel(SandboxController& c, UiState& ui) {
   if (!ImGui::CollapsingHeader("Compare")) return;
   CompareState& cs = c.compare();
   bool on = cs.enabled;
@@ -224,48 +305,100 @@ void compare_panel(SandboxController& c) {
   if (cs.view == CompareState::View::split) ImGui::SliderFloat("split", &cs.split, 0.0f, 1.0f);
   else ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "|a-b| = %.2f is white");
   ImGui::SliderInt("stats every", &cs.stats_every, 1, 120, "%d frames");
+  const std::string progress = reference_progress_text(c);
+  if (!progress.empty()) {
+    const bool done = reference_converged(c);
+    ImGui::TextColored(done ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", progress.c_str());
+    if (!done) tooltip("the RMSE means little until the reference has converged");
+  }
   if (cs.stats) {
-    ImGui::Text("RMSE %.4f   penumbra RMSE %.4f", cs.stats->rmse, cs.stats->rmse_penumbra);
+    ImGui::Text("RMSE %.4f   penumbra RMSE %s", cs.stats->rmse, penumbra_rmse_text(*cs.stats).c_str());
+    tooltip("penumbra RMSE: over pixels where the right-hand side (the reference) is in 0.02..0.98; "
+            "n/a when it has none (e.g. against hard shadows)");
     ImGui::Text("MAE %.4f   max %.3f   %zu px (%zu penumbra)", cs.stats->mae, cs.stats->max_error,
                 cs.stats->pixels, cs.stats->penumbra_pixels);
   }
+  if (!cs.rmse_history.empty()) {
+    float top = 0.0f;
+    for (float v : cs.rmse_history) top = std::max(top, v);
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "RMSE history, max %.4f", top);
+    ImGui::PlotLines("##rmse", cs.rmse_history.data(), static_cast<int>(cs.rmse_history.size()), 0, overlay, 0.0f,
+                     std::max(top, 1e-6f), ImVec2(-1, 40));
+  }
+  ImGui::InputText("metrics file", ui.metrics_path, sizeof ui.metrics_path);
+  if (ImGui::Button("export metrics")) {
+    Status st = c.note(write_metrics(c, ui.metrics_path));
+    if (st) ui.post(std::string("wrote ") + ui.metrics_path, ImGui::GetTime());
+  }
+  tooltip("compare statistics, reference progress and per-pass times; .json or .csv");
   if (!cs.stats_error.empty()) ImGui::TextColored(kRed, "%s", cs.stats_error.c_str());
 }
 
+// Messages have a fixed place of fixed height at the top of the panel: they wrap inside it and
+// scroll when long, so no widget below moves when one appears. Errors stay until the next
+// action succeeds; transient notes fade.
 void messages_panel(SandboxController& c, UiState& ui) {
   if (ImGui::Button("screenshot (F12)")) ui.screenshot_requested = true;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1);
   ImGui::InputText("##shot", ui.screenshot_path, sizeof ui.screenshot_path);
-  if (!c.message().empty()) ImGui::TextColored(kRed, "%s", c.message().c_str());
-  if (!ui.host_message.empty()) ImGui::TextWrapped("%s", ui.host_message.c_str());
+  const float lines = 4.0f;
+  ImGui::BeginChild("##messages", ImVec2(0, lines * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true);
+  ImGui::PushTextWrapPos(0.0f);
+  bool any = false;
+  if (!c.message().empty()) {
+    ImGui::TextColored(kRed, "%s", c.message().c_str());
+    any = true;
+  }
+  if (!c.refused().empty() && c.refused() != c.message()) {
+    ImGui::TextColored(kRed, "frame refused: %s", c.refused().c_str());
+    any = true;
+  }
   for (const Error& e : c.shader_errors()) {
     ImGui::TextColored(kRed, "%s", e.to_string().c_str());
     if (!e.details.empty()) tooltip(e.details);
+    any = true;
   }
+  const float alpha = ui.note_alpha(ImGui::GetTime());
+  if (alpha > 0.0f) {
+    ImGui::TextColored(ImVec4(0.8f, 0.9f, 0.8f, alpha), "%s", ui.note.c_str());
+    any = true;
+  }
+  if (!any) ImGui::TextDisabled("no messages");
+  ImGui::PopTextWrapPos();
+  ImGui::EndChild();
 }
 
 }  // namespace
 
-void draw_sandbox_ui(SandboxController& c, UiState& ui) {
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  const float height = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 200.0f);
-  // At most 45% of the width, so small (scripted, test) windows still show the scene.
-  const float width = std::min(420.0f, 0.45f * ImGui::GetIO().DisplaySize.x);
-  ImGui::SetNextWindowSize(ImVec2(width, std::min(height, 900.0f)), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Penumbra");
-  // Widgets take half the panel: long parameter names and the reset buttons stay readable.
-  ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.5f);
-  ImGui::Text("%.1f fps  %dx%d", ImGui::GetIO().Framerate, c.width(), c.height());
+float UiState::note_alpha(double now) const {
+  if (note.empty()) return 0.0f;
+  const double age = now - note_time;
+  if (age <= kNoteSeconds) return 1.0f;
+  return static_cast<float>(std::max(0.0, 1.0 - (age - kNoteSeconds) / kFadeSeconds));
+}
+
+void draw_sandbox_ui(SandboxController& c, UiState& ui, const Layout& layout) {
+  ImGui::SetNextWindowPos(ImVec2(float(layout.panel.x), float(layout.panel.y)));
+  ImGui::SetNextWindowSize(ImVec2(float(layout.panel.w), float(layout.panel.h)));
+  ImGui::Begin("Penumbra", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  // Widgets take 45% of the panel: long parameter names and the reset buttons stay readable.
+  ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.45f);
+  ImGui::Text("%.1f fps  frame %dx%d", ImGui::GetIO().Framerate, c.width(), c.height());
   messages_panel(c, ui);
   scene_panel(c, ui);
   light_panel(c);
   technique_panel(c, ui);
   graph_panel(c);
   viewer_panel(c);
-  compare_panel(c);
+  compare_panel(c, ui);
   ImGui::PopItemWidth();
   ImGui::End();
+  draw_panel_divider(ui.panel_width, layout);
+  draw_viewport_overlay(c, layout);
 }
 
 }  // namespace penumbra::sandbox

@@ -3,12 +3,14 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "app/layout.h"
 #include "app/script_runner.h"
 #include "app/ui_panels.h"
 #include "util/png.h"
@@ -35,7 +37,7 @@ Status save_back_buffer(const std::string& path, int width, int height) {
 // WASD + right-mouse look + Shift; Space aligns the light; F12 asks for a screenshot.
 class CameraInput {
  public:
-  void update(GLFWwindow* w, SandboxController& c, UiState& ui, float dt) {
+  void update(GLFWwindow* w, SandboxController& c, UiState& ui, const Rect& viewport, float dt) {
     const ImGuiIO& io = ImGui::GetIO();
     if (!io.WantCaptureKeyboard) {
       auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS; };
@@ -50,9 +52,21 @@ class CameraInput {
     double x = 0, y = 0;
     glfwGetCursorPos(w, &x, &y);
     bool rmb = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-    if (rmb && !looking_ && !io.WantCaptureMouse) looking_ = true;
+    if (rmb && !looking_ && !io.WantCaptureMouse && viewport.contains(int(x), int(y))) looking_ = true;
     if (!rmb) looking_ = false;
     if (looking_) c.look(float(x - last_x_), float(y - last_y_));
+    // Zoom (wheel, about the cursor) and pan (middle drag) of what fills the frame.
+    const bool over = viewport.contains(int(x), int(y)) && !io.WantCaptureMouse;
+    const glm::vec2 frame(float(std::max(c.width(), 1)), float(std::max(c.height(), 1)));
+    ViewZoom& zoom = c.viewer().zoom;
+    if (over && io.MouseWheel != 0.0f) {
+      const glm::vec2 anchor((float(x) - viewport.x) / frame.x, 1.0f - (float(y) - viewport.y) / frame.y);
+      zoom = zoom_about(zoom, std::pow(1.25f, io.MouseWheel), anchor);
+    }
+    const bool mmb = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+    if (mmb && !panning_ && over) panning_ = true;
+    if (!mmb) panning_ = false;
+    if (panning_) zoom = pan_by(zoom, glm::vec2(float(x - last_x_) / frame.x, -float(y - last_y_) / frame.y));
     last_x_ = x;
     last_y_ = y;
   }
@@ -64,7 +78,7 @@ class CameraInput {
     was_down = down;
     return edge;
   }
-  bool looking_ = false, space_ = false, f12_ = false;
+  bool looking_ = false, panning_ = false, space_ = false, f12_ = false;
   double last_x_ = 0, last_y_ = 0;
 };
 
@@ -81,14 +95,15 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
 
+  UiState ui;
+  // The script's and --size's sizes are the FRAME's: the window is as much wider as the panel.
   std::optional<ScriptRunner> runner;
   if (run.script)
     runner.emplace(*run.script, [&](int w, int h) -> Status {
-      glfwSetWindowSize(window, w, h);
+      glfwSetWindowSize(window, window_width_for(w, ui.panel_width), h);
       return controller.resize(w, h);
     });
 
-  UiState ui;
   CameraInput input;
   int exit_code = 0;
   bool final_shot_taken = run.final_screenshot.empty();
@@ -101,9 +116,12 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
     last_time = now;
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window, &fb_w, &fb_h);
-    // Interactive: the frame follows the window. Scripted: the script's size is authoritative
-    // (a window manager may not honour a resize at once).
-    if (!scripted && fb_w > 0 && fb_h > 0) (void)controller.resize(fb_w, fb_h);
+    const Layout layout = compute_layout(fb_w, fb_h, ui.panel_width);
+    ui.panel_width = layout.panel_width;
+    // Interactive: the frame follows the viewport (so its aspect is the viewport's). Scripted: the
+    // script's size is authoritative (a window manager may not honour a resize at once).
+    if (!scripted && layout.viewport.w > 0 && layout.viewport.h > 0)
+      (void)controller.resize(layout.viewport.w, layout.viewport.h);
 
     // ImGui needs two frames to lay out its windows before a screenshot shows them.
     bool script_finished = !runner;
@@ -123,7 +141,7 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
       take_final = frame >= 2;
     }
 
-    input.update(window, controller, ui, dt);
+    input.update(window, controller, ui, layout.viewport, dt);
     if (Status s = controller.render_frame(); !s) {
       const ScriptStep* step = runner ? runner->current() : nullptr;
       Error e = step ? step_error(*step, "frame failed: " + s.error().to_string()) : s.error();
@@ -141,13 +159,15 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
     glViewport(0, 0, std::max(fb_w, 1), std::max(fb_h, 1));
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    glBlitNamedFramebuffer(controller.presentation_framebuffer(), 0, 0, 0, w, h, 0, fb_h - h, w, fb_h,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    // The frame at the viewport's top-left, 1:1 (never stretched, never under the panel).
+    const int dst_x = layout.viewport.x, dst_top = fb_h - layout.viewport.y;
+    glBlitNamedFramebuffer(controller.presentation_framebuffer(), 0, 0, 0, w, h, dst_x, dst_top - h, dst_x + w,
+                           dst_top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    draw_sandbox_ui(controller, ui);
+    draw_sandbox_ui(controller, ui, layout);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
@@ -164,7 +184,8 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
     }
     for (const std::string& path : shots) {
       Status s = save_back_buffer(path, fb_w, fb_h);
-      ui.host_message = s ? "saved " + path : s.error().to_string();
+      if (s) ui.post("saved " + path, ImGui::GetTime());
+      else (void)controller.note(s);
       if (!s && scripted) {
         std::fprintf(stderr, "penumbra-sandbox: %s\n", s.error().to_string().c_str());
         exit_code = s.error().exit_code();

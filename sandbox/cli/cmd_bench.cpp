@@ -18,7 +18,7 @@
 namespace penumbra::cli {
 namespace {
 
-const std::vector<OptionSpec> kSpecs = {
+const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"techniques", true, false, "a,b:k=v,...", "techniques to time, each with settings of its own "
                                                 "(mpg:alteration=pcf); default: every registered one but reference"},
     {"scenes", true, false, "s1,s2", "built-in scenes or glTF files (default colonnade)"},
@@ -30,7 +30,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"json", true, false, "OUT.json", "write the results as JSON"},
     context_option_spec(),
     plugin_dir_option_spec(),
-};
+});
 
 int fail(const Error& e) {
   std::fprintf(stderr, "penumbra bench: %s\n", e.to_string().c_str());
@@ -107,7 +107,8 @@ Status write_json(const std::string& path, const BenchReport& report) {
 int cmd_bench(const std::vector<std::string>& argv) {
   if (help_requested(argv))
     return print_help("penumbra bench [--techniques a,b:k=v,...] [--scenes s1,s2] [--size WxH,...] [--shadow-size N,...] "
-                                    "[--frames N] [--warmup N] [--set k=v]... [--json OUT.json]",
+                                    "[--frames N] [--warmup N] [--set k=v]... [--json OUT.json]\n"
+                                    "                      [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]",
                                     "Renders warmup + N frames of each technique on each scene and prints the\n"
                                     "median time of every pass and their sum. On a GPU (EGL) passes are timed with\n"
                                     "timestamp queries; on llvmpipe with glFinish + a CPU clock.",
@@ -121,7 +122,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
   const BenchOptions& o = *options;
   std::vector<scene::Scene> scenes;
   for (const std::string& s : o.scenes) {
-    auto scene = load_scene_option(s);
+    auto scene = load_scene_option(s, *args, o.sizes.front().first, o.sizes.front().second);  // fitted to the first size
     if (!scene) return fail(scene.error());
     scenes.push_back(std::move(*scene));
   }

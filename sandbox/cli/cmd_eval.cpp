@@ -31,7 +31,7 @@ namespace {
 // Heat maps show |technique - reference| / kHeatMapScale (white at 0.25 and above).
 constexpr float kHeatMapScale = 0.25f;
 
-const std::vector<OptionSpec> kSpecs = {
+const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
     {"techniques", true, false, "a,b:k=v,...", "techniques to evaluate, each with settings of its own (pmchss:variant=regular:k=2)"},
     {"reference", true, false, "raytraced|raster", "ground truth method (default raytraced)"},
@@ -44,15 +44,13 @@ const std::vector<OptionSpec> kSpecs = {
     {"heatmaps", true, false, "DIR", "write one error heat-map PNG per technique into DIR"},
     {"masks", true, false, "DIR", "write each technique's shadow mask and the reference's as grey PNGs into DIR"},
     {"set", true, true, "k=v", "set a parameter of every listed technique (and the reference) that has it"},
-    {"light-size", true, false, "S", "override the scene light's size (emitter diameter, world units) for every "
-                                     "technique and the reference; 0 = exact hard shadows"},
     {"no-cache", false, false, "", "render the reference even when a cached one matches, and do not cache it"},
     {"flicker", true, false, "pan|light", "also measure temporal stability over a slow camera pan or light motion"},
     {"flicker-frames", true, false, "N", "frames of the --flicker motion (default 8; each needs a reference)"},
     {"flicker-step", true, false, "DEG", "--flicker motion per frame, degrees (default 0.25)"},
     context_option_spec(),
     plugin_dir_option_spec(),
-};
+});
 
 constexpr int kWarmupFrames = 3;
 
@@ -67,7 +65,6 @@ struct EvalOptions {
   std::vector<TechniqueSpec> techniques;
   std::string reference = "raytraced";
   int width = 640, height = 360, shadow = 2048, rays = 256, samples = 1024, frames = 10;
-  std::optional<float> light_size;  // --light-size: replaces the scene light's size
   bool use_cache = true;
   std::string json, heatmaps, masks;
   std::vector<std::string> sets;
@@ -101,11 +98,6 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const plugin::Tec
       if (!n) return n.error();
       *i.value = *n;
     }
-  if (auto s = args.get("light-size")) {
-    auto size = parse_real("light-size", *s, 0.0, 1e6);
-    if (!size) return size.error();
-    o.light_size = static_cast<float>(*size);
-  }
   if (auto m = args.get("flicker")) {
     if (Status s = check_flicker_motion(*m); !s) return s.error();
     FlickerSettings f;
@@ -207,7 +199,8 @@ int cmd_eval(const std::vector<std::string>& argv) {
   if (help_requested(argv))
     return print_help("penumbra eval --scene NAME|FILE --techniques a,b,c [--reference raytraced|raster] "
                                     "[--size WxH] [--shadow-size N] [--rays M] [--samples N] [--json OUT.json] "
-                                    "[--heatmaps DIR] [--masks DIR] [--light-size S] [--flicker pan|light] [--set k=v]...",
+                                    "[--heatmaps DIR] [--masks DIR] [--flicker pan|light] [--set k=v]...\n"
+                                    "                     [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]",
                                     "Renders a ground-truth reference once, then each technique on the same frame,\n"
                                     "and compares shadow masks over receiver pixels (RMSE, RMSE in the penumbra\n"
                                     "0.02 < ref < 0.98, MAE, max error, SSIM, edge error = mean |error| within 3 px\n"
@@ -226,9 +219,8 @@ int cmd_eval(const std::vector<std::string>& argv) {
   auto options = parse_eval_options(*args, registry);
   if (!options) return fail(options.error());
   const EvalOptions& o = *options;
-  auto scene = load_scene_option(o.scene_name);
+  auto scene = load_scene_option(o.scene_name, *args, o.width, o.height);
   if (!scene) return fail(scene.error());
-  if (o.light_size) scene->light.size = *o.light_size;
 
   int code = 0;
   auto ctx = open_context(*args, "eval", &code, 16, 16);

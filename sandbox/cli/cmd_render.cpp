@@ -15,7 +15,7 @@
 namespace penumbra::cli {
 namespace {
 
-const std::vector<OptionSpec> kSpecs = {
+const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
     {"technique", true, false, "T", "technique name (default pcss if registered, else the first); see 'penumbra techniques'"},
     {"set", true, true, "k=v", "set a technique parameter"},
@@ -26,10 +26,9 @@ const std::vector<OptionSpec> kSpecs = {
     {"all-techniques", false, false, "", "render every registered technique into --out-dir"},
     {"out-dir", true, false, "DIR", "directory for --all-techniques (default out)"},
     {"frames", true, false, "N", "frames to run before writing (progressive techniques; default 1)"},
-    {"light-size", true, false, "S", "override the scene light's size (emitter diameter, world units); 0 = hard"},
     context_option_spec(),
     plugin_dir_option_spec(),
-};
+});
 
 int fail(const Error& e) {
   std::fprintf(stderr, "penumbra render: %s\n", e.to_string().c_str());
@@ -79,7 +78,8 @@ Status write_outputs(plugin::TechniqueSession& session, const std::string& out, 
 int cmd_render(const std::vector<std::string>& argv) {
   if (help_requested(argv))
     return print_help("penumbra render --scene NAME|FILE [--technique T] [--set k=v]... "
-                                    "[--size WxH] [--shadow-size N] [--out OUT.png] [--mask MASK.png] [--light-size S]",
+                                    "[--size WxH] [--shadow-size N] [--out OUT.png] [--mask MASK.png]\n"
+                                    "                       [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]",
                                     "Renders one frame of a shadow technique headless and writes PNGs.",
                                     kSpecs);
   auto args = parse_args(argv, kSpecs);
@@ -119,13 +119,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     }
     techniques = {t};
   }
-  auto scene = load_scene_option(args->get("scene").value_or("showcase"));
+  auto scene = load_scene_option(args->get("scene").value_or("showcase"), *args, width, height);
   if (!scene) return fail(scene.error());
-  if (auto s = args->get("light-size")) {
-    auto size = parse_real("light-size", *s, 0.0, 1e6);
-    if (!size) return fail(size.error());
-    scene->light.size = static_cast<float>(*size);
-  }
 
   int code = 0;
   auto ctx = open_context(*args, "render", &code, 16, 16);

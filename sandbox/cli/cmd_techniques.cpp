@@ -43,6 +43,8 @@ nlohmann::ordered_json param_json(const graph::ParamDesc& p) {
     j["max"] = p.max;
   }
   if (p.type == graph::ParamType::enumeration) j["options"] = p.options;
+  if (p.has_step()) j["step"] = p.step;
+  if (!p.applies.empty()) j["applies"] = p.applies;
   return j;
 }
 

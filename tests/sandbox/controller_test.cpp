@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "app/controller.h"
+#include "app/param_applicability.h"
 #include "plugin/preset.h"
 #include "util/file_write.h"
 #include "image_stats.h"
@@ -204,6 +205,32 @@ TEST_F(Fixture, LightAndCameraControls) {
   ASSERT_TRUE(controller->set_camera(glm::vec3(0, 3, 6), glm::vec3(0, 0, 0), std::nullopt, std::nullopt));
   EXPECT_LT(controller->camera().pitch, 0.0f);
   EXPECT_TRUE(controller->render_frame());
+}
+
+// The examples on the real techniques: pcf's `samples` has no effect with the box
+// kernel and does with vogel; the tiny technique's `darken` switch takes no parameter with it,
+// but every parameter of every technique at its defaults either applies or says why not.
+TEST_F(Fixture, ParametersWithoutEffectAreFoundFromTheGraph) {
+  ASSERT_TRUE(controller->set_technique("pcf"));
+  ASSERT_TRUE(controller->set_param("kernel", "box"));
+  auto applies = [&](const std::string& name) {
+    plugin::TechniqueSession& s = controller->session();
+    return param_applicability(*s.params().find(name), s.params(), s.graph(), s.plan());
+  };
+  const Applicability box = applies("samples");
+  EXPECT_FALSE(box.applies);
+  EXPECT_NE(box.reason.find("vogel"), std::string::npos) << box.reason;
+  ASSERT_TRUE(controller->set_param("kernel", "vogel"));
+  EXPECT_TRUE(applies("samples").applies);
+  for (const std::string& t : controller->technique_names()) {
+    if (t == "reference") continue;  // its methods compile Embree scenes: slow, and covered elsewhere
+    ASSERT_TRUE(controller->set_technique(t)) << t;
+    for (const graph::ParamDesc& d : controller->session().params().descs()) {
+      const Applicability a = applies(d.name);
+      EXPECT_TRUE(a.applies || !a.reason.empty()) << t << "." << d.name;
+      if (!a.applies) std::printf("  %s.%s: %s\n", t.c_str(), d.name.c_str(), a.reason.c_str());
+    }
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <stb/stb_image.h>
 
 #include <string>
+#include <vector>
 
 namespace penumbra::sandbox_test {
 
@@ -39,6 +40,27 @@ inline ImageStats png_stats(const std::string& path, double x_from = 0.0) {
   s.dark /= double(n);
   s.bright /= double(n);
   return s;
+}
+
+// An RGBA8 image read back for pixel probes (empty when unreadable).
+struct Rgba {
+  int width = 0, height = 0;
+  std::vector<unsigned char> data;
+  const unsigned char* at(int x, int y) const { return data.data() + 4 * (static_cast<size_t>(y) * width + x); }
+  double luminance(int x, int y) const {
+    const unsigned char* p = at(x, y);
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+  }
+};
+
+inline Rgba read_rgba(const std::string& path) {
+  Rgba r;
+  int channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &r.width, &r.height, &channels, 4);
+  if (!data) return r;
+  r.data.assign(data, data + 4 * static_cast<size_t>(r.width) * r.height);
+  stbi_image_free(data);
+  return r;
 }
 
 }  // namespace penumbra::sandbox_test

@@ -88,6 +88,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{R"([{"set": {"k": [1]}}])", "step 0: set: value of 'k' must be a boolean, number or string"},
         BadScript{R"([{"compare": {"view": "side"}}])", "step 0: compare.view must be"},
         BadScript{R"([{"expect_no_gl_error": false}])", "step 0: expect_no_gl_error must be true"},
+        BadScript{R"([{"ground": "yes"}])", "step 0: ground must be true or false"},
+        BadScript{R"([{"camera": "orbit"}])", "step 0: camera must be \"fit\", \"file\""},
         BadScript{R"({"wait": 1})", "must be a JSON array"},
         BadScript{R"([{"wait": 1},)", "not valid JSON"}));
 
@@ -162,6 +164,49 @@ TEST(Options, ParsesTheDocumentedCommandLine) {
   EXPECT_EQ(o->screenshot, "o.png");
   EXPECT_TRUE(parse_sandbox_options({"--help"})->help);
   EXPECT_NE(sandbox_help().find("--script FILE"), std::string::npos);
+}
+
+TEST(Script, GroundAndCameraChoiceSteps) {
+  auto steps = parse_script(R"([{"ground": false}, {"camera": "fit"}, {"camera": "file:front"}])", "s.json");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  ASSERT_EQ(steps->size(), 3u);
+  EXPECT_EQ((*steps)[0].kind, StepKind::ground);
+  EXPECT_FALSE((*steps)[0].flag);
+  EXPECT_EQ((*steps)[1].camera.choice, "fit");
+  EXPECT_EQ((*steps)[2].camera.choice, "file:front");
+  EXPECT_FALSE((*steps)[2].camera.position);
+}
+
+TEST(Script, InspectAndViewZoomSteps) {
+  auto steps = parse_script(R"([{"view": {"resource": "shadow_mask", "zoom": 4, "center": [0.25, 0.5], "auto_range": true}},
+                               {"inspect": {"at": [10, 20], "out": "p.json"}}, {"metrics": "m.json"}])", "s.json");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  EXPECT_EQ(*(*steps)[0].view.zoom, 4.0f);
+  EXPECT_EQ(*(*steps)[0].view.center, glm::vec2(0.25f, 0.5f));
+  EXPECT_TRUE(*(*steps)[0].view.auto_range);
+  EXPECT_EQ((*steps)[1].kind, StepKind::inspect);
+  EXPECT_EQ((*steps)[1].inspect.x, 10);
+  EXPECT_EQ((*steps)[1].inspect.y, 20);
+  EXPECT_EQ((*steps)[1].inspect.out, "p.json");
+  EXPECT_EQ((*steps)[2].kind, StepKind::metrics);
+  EXPECT_FALSE(parse_script(R"([{"view": {"zoom": 100}}])", "s.json"));
+  EXPECT_FALSE(parse_script(R"([{"inspect": {"at": [1, 2]}}])", "s.json"));
+  EXPECT_FALSE(parse_script(R"([{"metrics": ""}])", "s.json"));
+}
+
+TEST(Options, SceneStagingOptionsAreTheClis) {
+  auto o = parse_sandbox_options({"--camera", "1,2,3:0,0,0", "--light-dir", "0,-2,0", "--light-size", "0.5",
+                                  "--ground", "off"});
+  ASSERT_TRUE(o) << o.error().to_string();
+  EXPECT_EQ(o->staging.camera.kind, scene::CameraChoice::Kind::pose);
+  EXPECT_EQ(o->staging.camera.position, glm::vec3(1, 2, 3));
+  EXPECT_EQ(*o->staging.light_direction, glm::vec3(0, -1, 0));
+  EXPECT_FLOAT_EQ(*o->staging.light_size, 0.5f);
+  EXPECT_FALSE(o->staging.ground);
+  EXPECT_TRUE(parse_sandbox_options({})->staging.ground) << "the ground plane is on by default";
+  EXPECT_FALSE(parse_sandbox_options({"--ground", "maybe"}));
+  EXPECT_FALSE(parse_sandbox_options({"--light-dir", "0,0,0"}));
+  EXPECT_NE(sandbox_help().find("--ground"), std::string::npos);
 }
 
 TEST(Options, BadInputIsAnError) {

@@ -13,6 +13,8 @@ using graph::Usage;
 class FillPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
+    // Lets the tests see what the sandbox does with a frame a pass refuses as bad input.
+    if (ctx.boolean("refuse")) return make_error("sandbox_tiny: 'refuse' is on, so this frame is refused");
     gl::ShaderProgram& p = ctx.program({.compute = "tests/sandbox/shaders/tiny_fill.comp.glsl"});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "position", "position");
@@ -47,7 +49,8 @@ void register_passes(exec::PassLibrary& library) {
       ParamDesc{.name = "level", .type = ParamType::real, .default_value = 0.5, .min = 0.0, .max = 1.0},
       ParamDesc{.name = "stripe_width", .type = ParamType::integer, .default_value = 8, .min = 1, .max = 64},
       ParamDesc{.name = "pattern", .type = ParamType::enumeration, .default_value = std::string("stripes"),
-                .options = {"stripes", "checker"}}};
+                .options = {"stripes", "checker"}},
+      ParamDesc{.name = "refuse", .type = ParamType::boolean, .default_value = false}};
   fill.same_size_groups = {{"position", "mask"}};
   library.add({fill, [] { return std::make_unique<FillPass>(); }});
 

@@ -15,47 +15,15 @@
 #include <string>
 
 #include "image_stats.h"
+#include "xvfb_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout + stderr
-};
-
-RunResult run(const std::string& command) {
-  RunResult r;
-  std::string full = command + " 2>&1";
-  FILE* pipe = popen(full.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) r.output.append(buf, n);
-  int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-// ctest runs these tests in parallel and `xvfb-run -a` alone races for the same display
-// number ("Xvfb failed to start"): start each process's search at its own number.
-std::string xvfb() {
-  if (run("command -v xvfb-run").exit_code != 0) return "";
-  const int first_display = 100 + static_cast<int>(::getpid() % 800) * 8;
-  return "xvfb-run -a -n " + std::to_string(first_display) + " -s \"-screen 0 1280x1024x24\" ";
-}
-
-// Runs `command` in the X server of `xvfb` and returns the COMMAND's exit code: xvfb-run's own
-// status can be 5 when its temporary-directory clean-up races with a parallel xvfb-run.
-RunResult run_in_xvfb(const std::string& xvfb_prefix, const std::string& command) {
-  RunResult r = run(xvfb_prefix + "sh -c '" + command + "; echo penumbra_exit=$?'");
-  const std::string marker = "penumbra_exit=";
-  if (auto at = r.output.rfind(marker); at != std::string::npos) {
-    r.exit_code = std::atoi(r.output.c_str() + at + marker.size());
-    r.output.erase(at);
-  }
-  return r;
-}
+using penumbra::sandbox_test::RunResult;
+using penumbra::sandbox_test::run;
+using penumbra::sandbox_test::run_in_xvfb;
+using penumbra::sandbox_test::xvfb;
 
 fs::path fresh_dir(const std::string& name) { return penumbra::test::fresh_temp_dir("sandbox_xvfb_" + name); }
 

@@ -11,7 +11,6 @@ namespace {
 class DilatePass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    if (Status s = check_odd(ctx, "dilation_kernel"); !s) return s;
     gl::ShaderProgram& p =
         ctx.program({.compute = std::string(kShaderDir) + "dilate.comp.glsl", .defines = {axis_define(ctx)}});
     if (!p.valid()) return *p.last_error();
@@ -33,7 +32,7 @@ exec::PassType dilate_pass_type() {
   exec::PassDeclBuilder b = distance_map_filter(
       "mpg_dilate", "mpg pass 3: Gaussian dilation of D into lit pixels, one axis (Cherry & Kooima 3.1)");
   b.enumeration("axis", "x", {"x", "y"}, "Which axis of the separable dilation")
-      .integer("dilation_kernel", 9, 3, kMaxKernel, "pixels", "Dilation kernel K (odd), sigma = K / 3");
+      .integer("dilation_kernel", 9, 3, kMaxKernel, "pixels", "Dilation kernel K (odd), sigma = K / 3").step(2);
   add_depth_aware(b);
   add_kernel_shape(b);
   return b.build<DilatePass>();

@@ -24,7 +24,6 @@ const char* alteration_define(const std::string& alteration) {
 class DistanceMapPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    if (Status s = check_odd(ctx, "max_kernel"); !s) return s;
     const std::string alteration = ctx.enumeration("alteration");
     gl::ShaderProgram& p = ctx.program(
         {.compute = std::string(kShaderDir) + "distance_map.comp.glsl",

@@ -13,7 +13,6 @@ namespace {
 class GaussianFilterPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    if (Status s = check_odd(ctx, "max_kernel"); !s) return s;
     gl::ShaderProgram& p = ctx.program(
         {.compute = std::string(kShaderDir) + "gaussian_filter.comp.glsl", .defines = {axis_define(ctx)}});
     if (!p.valid()) return *p.last_error();

@@ -23,7 +23,7 @@ GLuint linear_sampler(std::optional<gl::Sampler>& sampler) {
 }
 
 exec::PassDeclBuilder& add_max_kernel(exec::PassDeclBuilder& b) {
-  return b.integer("max_kernel", 19, 3, kMaxKernel, "pixels", "Largest filter kernel (odd)");
+  return b.integer("max_kernel", 19, 3, kMaxKernel, "pixels", "Largest filter kernel (odd)").step(2);
 }
 
 exec::PassDeclBuilder& add_depth_aware(exec::PassDeclBuilder& b) {
@@ -35,13 +35,6 @@ exec::PassDeclBuilder& add_multipass_kernel(exec::PassDeclBuilder& b) {
   return b.enumeration("kernel_mode", "progressive", {"progressive", "fixed"}, "Kernel size per blur pass")
       .integer("poisson_taps", 20, 1, 64, "", "Poisson-disk taps per blur pass")
       .enumeration("kernel_sampling", "poisson", {"poisson", "dense"}, "Poisson taps or every kernel texel");
-}
-
-Status check_odd(const exec::PassContext& ctx, const char* name) {
-  int v = ctx.integer(name);
-  if (v % 2 != 0) return {};
-  return make_error("parameter '" + std::string(name) + "' must be odd (the kernel is centred on the pixel), got " +
-                    std::to_string(v) + "; valid: 3, 5, ..., " + std::to_string(kMaxKernel));
 }
 
 void set_depth_aware_uniforms(const gl::Program& program, const exec::PassContext& ctx) {

@@ -1,7 +1,7 @@
 #pragma once
 // What the mpg pass types share: parameter declarations used by several of them (a pass type
-// declares type and valid range only; mpg.json holds the user-facing defaults and text), the
-// check that a kernel size is odd, and the depth-aware uniforms of shaders/mpg_common.glsl.
+// declares type, valid range and step only (kernel sizes are odd: step 2 from 3); mpg.json holds
+// the user-facing defaults and text), and the depth-aware uniforms of shaders/mpg_common.glsl.
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,14 +26,11 @@ exec::PassDeclBuilder& add_kernel_shape(exec::PassDeclBuilder& b);
 // A bilinear clamp-to-edge sampler, made on first use (a context is current in execute()).
 GLuint linear_sampler(std::optional<gl::Sampler>& sampler);
 
-// max_kernel [3, 63] pixels; depth_aware + depth_tolerance; the three multi-pass kernel knobs.
+// max_kernel [3, 63] pixels, odd; depth_aware + depth_tolerance; the three multi-pass kernel knobs.
 exec::PassDeclBuilder& add_max_kernel(exec::PassDeclBuilder& b);
 exec::PassDeclBuilder& add_depth_aware(exec::PassDeclBuilder& b);
 exec::PassDeclBuilder& add_multipass_kernel(exec::PassDeclBuilder& b);
 
-// Kernel sizes are centred on the pixel: an even `name` is refused with the valid values (the
-// range cannot say "odd"; the executor prefixes the pass name).
-Status check_odd(const exec::PassContext& ctx, const char* name);
 
 void set_depth_aware_uniforms(const gl::Program& program, const exec::PassContext& ctx);
 KernelSampling kernel_sampling(const exec::PassContext& ctx);

@@ -17,7 +17,6 @@ namespace {
 class MultipassBlurPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    if (Status s = check_odd(ctx, "max_kernel"); !s) return s;
     const bool dense = kernel_sampling(ctx) == KernelSampling::dense;
     gl::ShaderProgram& p = ctx.program({.compute = std::string(kShaderDir) + "multipass_blur.comp.glsl",
                                         .defines = {{"DENSE", dense ? "1" : "0"}}});

@@ -12,7 +12,6 @@ namespace {
 class PcfFilterPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    if (Status s = check_odd(ctx, "max_kernel"); !s) return s;
     gl::ShaderProgram& p = ctx.program({.compute = std::string(kShaderDir) + "pcf_filter.comp.glsl"});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_distance_map", "input", linear_sampler(linear_));

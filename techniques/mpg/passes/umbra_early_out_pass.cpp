@@ -12,7 +12,6 @@ namespace {
 class UmbraEarlyOutPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    if (Status s = check_odd(ctx, "umbra_neighbourhood"); !s) return s;
     const int neighbourhood = ctx.integer("umbra_neighbourhood"), max_kernel = ctx.integer("max_kernel");
     if (neighbourhood < max_kernel) {
       // Section 5: "examines a neighbor around each pixel, that is at least as big as the max
@@ -41,7 +40,7 @@ exec::PassType umbra_early_out_pass_type() {
       "mpg_umbra_early_out", "mpg umbra early-out: D = 0 where the whole neighbourhood is shadowed, one axis "
                              "(Cherry & Kooima 5)");
   b.enumeration("axis", "x", {"x", "y"}, "Which axis of the separable test")
-      .integer("umbra_neighbourhood", 31, 3, kMaxKernel, "pixels", "Neighbourhood size N (odd)");
+      .integer("umbra_neighbourhood", 31, 3, kMaxKernel, "pixels", "Neighbourhood size N (odd)").step(2);
   add_max_kernel(b);
   return b.build<UmbraEarlyOutPass>();
 }

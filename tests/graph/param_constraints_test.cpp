@@ -1,0 +1,129 @@
+// Declarative parameter constraints: `step` (odd kernel sizes and the like) checked wherever a
+// value is set, parsed from JSON, and required to agree between a pass type and the graph
+// parameter bound to it; `applies` conditions parsed and checked against the graph's parameters.
+#include <gtest/gtest.h>
+
+#include "graph/graph_json.h"
+#include "test_registry.h"
+
+namespace penumbra::graph {
+namespace {
+
+using namespace testing;
+
+ParamDesc odd_size() {
+  ParamDesc d = int_param("box_size", 5, 1, 15, "texels", "Box width");
+  d.step = 2;
+  return d;
+}
+
+TEST(ParamStep, OnlyValuesOnTheGridAreAccepted) {
+  ParameterSet p({odd_size()});
+  EXPECT_TRUE(p.set("box_size", 7));
+  EXPECT_TRUE(p.set("box_size", 15));
+  Status even = p.set("box_size", 4);
+  ASSERT_FALSE(even);
+  EXPECT_NE(even.error().message.find("must be odd"), std::string::npos) << even.error().message;
+  EXPECT_NE(even.error().message.find("1, 3, 5, ..., 15"), std::string::npos) << even.error().message;
+  EXPECT_EQ(p.get_int("box_size"), 15);  // unchanged
+  EXPECT_FALSE(p.set_from_string("box_size=8"));
+  // The range still applies first.
+  EXPECT_NE(p.set("box_size", 17).error().message.find("[1, 15]"), std::string::npos);
+}
+
+TEST(ParamStep, NearestValueRoundsHalfUpFromTheMinimum) {
+  ParamDesc d = odd_size();
+  EXPECT_EQ(nearest_step_value(d, 4), 5);
+  EXPECT_EQ(nearest_step_value(d, 5), 5);
+  EXPECT_EQ(nearest_step_value(d, 6), 7);
+  EXPECT_EQ(nearest_step_value(d, 0), 1);
+  EXPECT_EQ(nearest_step_value(d, -2), -1);
+  d.min = 10;
+  d.step = 5;
+  EXPECT_EQ(nearest_step_value(d, 12), 10);
+  EXPECT_EQ(nearest_step_value(d, 13), 15);
+  EXPECT_NE(check_param_value(d, 12).error().message.find("10 + k * 5"), std::string::npos);
+  d.step = 0;  // no step: every integer
+  EXPECT_EQ(nearest_step_value(d, 12), 12);
+  EXPECT_TRUE(check_param_value(d, 12));
+}
+
+TEST(ParamStep, JsonDeclaresItAndTheDefaultMustBeOnTheGrid) {
+  auto ok = parse_graph_json(R"({"name": "x", "parameters": [
+    {"name": "n", "type": "int", "default": 3, "min": 1, "max": 9, "step": 2}], "passes": []})", "s.json");
+  ASSERT_TRUE(ok) << all_messages(ok.errors());
+  EXPECT_EQ(ok->parameters[0].step, 2);
+  auto even = parse_graph_json(R"({"name": "x", "parameters": [
+    {"name": "n", "type": "int", "default": 4, "min": 1, "max": 9, "step": 2}], "passes": []})", "s.json");
+  ASSERT_FALSE(even);
+  EXPECT_EQ(even.errors()[0].where, "/parameters/0/default") << all_messages(even.errors());
+  for (const char* bad : {R"("type": "float", "default": 1.0, "step": 2)", R"("type": "int", "default": 1, "step": 0)",
+                          R"("type": "int", "default": 1, "step": 1.5)"}) {
+    auto g = parse_graph_json(std::string(R"({"name": "x", "parameters": [{"name": "n", )") + bad + R"(}], "passes": []})",
+                              "s.json");
+    ASSERT_FALSE(g) << bad;
+    EXPECT_EQ(g.errors()[0].where, "/parameters/0/step") << all_messages(g.errors());
+  }
+}
+
+// A pass type that takes only odd sizes; the graph parameter bound to it must say so too.
+PassTypeRegistry odd_registry() {
+  PassTypeRegistry r;
+  register_generic_pass_types(r);
+  PassTypeDecl box;
+  box.name = "odd_box";
+  box.slots = {{"input", Access::read, SlotKind::texture, {}, Usage::sampled, true},
+               {"output", Access::write, SlotKind::texture, {}, Usage::image_store, true}};
+  box.params = {odd_size()};
+  r.add(box);
+  return r;
+}
+
+GraphErrors compile_with(const std::string& param) {
+  auto g = parse_graph_json(R"({"name": "t", "parameters": [)" + param + R"(],
+    "resources": {"a": {"kind": "persistent", "format": "R16F", "size": "screen"},
+                  "b": {"kind": "texture", "format": "R16F", "size": "screen"}},
+    "passes": [{"type": "odd_box", "name": "box", "slots": {"input": "a", "output": "b"}}],
+    "outputs": ["b"]})", "t.json");
+  if (!g) return g.errors();
+  ParameterSet params(g->parameters);
+  auto plan = compile(*g, odd_registry(), params, small_settings(), {});
+  return plan ? GraphErrors{} : plan.errors();
+}
+
+TEST(ParamStep, AGraphParameterBoundToAnOddOnlyPassParameterMustBeOddOnly) {
+  GraphErrors any = compile_with(R"({"name": "box_size", "type": "int", "default": 5, "min": 1, "max": 15})");
+  ASSERT_TRUE(has_code(any, GraphErrorCode::param_range_mismatch)) << all_messages(any);
+  EXPECT_NE(all_messages(any).find("steps of 2 from 1"), std::string::npos) << all_messages(any);
+  GraphErrors even = compile_with(R"({"name": "box_size", "type": "int", "default": 6, "min": 2, "max": 14, "step": 2})");
+  EXPECT_TRUE(has_code(even, GraphErrorCode::param_range_mismatch)) << all_messages(even);
+  // Odd, or a coarser grid of odd values (1, 5, 9, ...), fits.
+  GraphErrors odd = compile_with(R"({"name": "box_size", "type": "int", "default": 5, "min": 1, "max": 15, "step": 2})");
+  EXPECT_TRUE(odd.empty()) << all_messages(odd);
+  EXPECT_TRUE(compile_with(R"({"name": "box_size", "type": "int", "default": 5, "min": 1, "max": 13, "step": 4})").empty());
+}
+
+TEST(ParamApplies, ConditionsMayReadAnyParameterAndAreChecked) {
+  auto ok = parse_graph_json(R"({"name": "x", "parameters": [
+    {"name": "kernel", "type": "enum", "options": ["box", "vogel"], "default": "box"},
+    {"name": "samples", "type": "int", "default": 16, "min": 1, "max": 64, "applies": "$kernel == \"vogel\""}],
+    "passes": []})", "a.json");
+  ASSERT_TRUE(ok) << all_messages(ok.errors());
+  EXPECT_EQ(ok->parameters[1].applies, "$kernel == \"vogel\"");
+  struct Bad {
+    const char* applies;
+    const char* says;
+  };
+  for (const Bad& b : {Bad{R"($kernel == \"hex\")", "hex"}, Bad{R"($nope)", "nope"}, Bad{R"($kernel ==)", "kernel"},
+                       Bad{R"($samples)", "samples"}}) {
+    auto g = parse_graph_json(std::string(R"({"name": "x", "parameters": [
+      {"name": "kernel", "type": "enum", "options": ["box", "vogel"], "default": "box"},
+      {"name": "samples", "type": "int", "default": 16, "applies": ")") + b.applies + R"("}], "passes": []})", "a.json");
+    ASSERT_FALSE(g) << b.applies;
+    EXPECT_EQ(g.errors()[0].where, "/parameters/1/applies") << all_messages(g.errors());
+    EXPECT_NE(all_messages(g.errors()).find(b.says), std::string::npos) << all_messages(g.errors());
+  }
+}
+
+}  // namespace
+}  // namespace penumbra::graph
