@@ -29,6 +29,7 @@ constexpr StepName kSteps[] = {
     {"view", StepKind::view},         {"resize", StepKind::resize},
     {"expect_no_gl_error", StepKind::expect_no_gl_error}, {"ground", StepKind::ground},
     {"metrics", StepKind::metrics},   {"inspect", StepKind::inspect},
+    {"graph", StepKind::graph},
 };
 
 std::string valid_step_names() {
@@ -105,7 +106,8 @@ void parse_body(ScriptStep& s, const json& v) {
     case StepKind::scene: s.text = need_string(v, "scene"); break;
     case StepKind::technique: s.text = need_string(v, "technique"); break;
     case StepKind::screenshot:
-    case StepKind::metrics: {
+    case StepKind::metrics:
+    case StepKind::graph: {
       const std::string key = step_kind_name(s.kind);
       s.text = need_string(v, key);
       if (s.text.empty()) problem(key + ": the path is empty");

@@ -24,7 +24,7 @@ namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error, ground, metrics, inspect
+  resize, expect_no_gl_error, ground, metrics, inspect, graph
 };
 const char* step_kind_name(StepKind kind);
 
