@@ -165,18 +165,23 @@ def cost_rows(raw):
 def cost_charts(rows, path):
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4))
     labels = sorted({r["label"] for r in rows}, key=lambda l: (FAMILIES.index(family(l)) if family(l) in FAMILIES else 99, l))
+    # The sweep's 1080p and 2048² (a quick run has other sizes: its middle ones then).
+    sizes = sorted({r["size"] for r in rows}, key=lambda v: rows[[x["size"] for x in rows].index(v)]["pixels"])
+    maps = sorted({r["map"] for r in rows})
+    screen = "1920x1080" if "1920x1080" in sizes else sizes[len(sizes) // 2]
+    shadow = 2048 if 2048 in maps else maps[len(maps) // 2]
     for label in labels:
         colour = COLOURS.get(family(label), "#444444")
         style = "-" if label == family(label) else ":"
-        at1080 = sorted((r["map"], r["own"]) for r in rows if r["label"] == label and r["size"] == "1920x1080")
-        at2048 = sorted((r["pixels"], r["own"]) for r in rows if r["label"] == label and r["map"] == 2048)
+        at1080 = sorted((r["map"], r["own"]) for r in rows if r["label"] == label and r["size"] == screen)
+        at2048 = sorted((r["pixels"], r["own"]) for r in rows if r["label"] == label and r["map"] == shadow)
         if at1080:
             a.plot(*zip(*at1080), style, marker="o", ms=3, color=colour, label=label)
         if at2048:
             b.plot([p / 1e6 for p, _ in at2048], [m for _, m in at2048], style, marker="o", ms=3, color=colour, label=label)
     a.set_xscale("log", base=2)
-    a.set_xlabel("shadow map size (texels per side), 1920x1080")
-    b.set_xlabel("screen megapixels, 2048² map")
+    a.set_xlabel(f"shadow map size (texels per side), {screen}")
+    b.set_xlabel(f"screen megapixels, {shadow}² map")
     for ax in (a, b):
         ax.set_ylabel("GPU ms, technique passes (no shadow map)")
         ax.set_yscale("log")
@@ -211,7 +216,7 @@ def gallery(raw, s, path):
     for ax in flat:
         ax.axis("off")
     fig.suptitle(f"{s.title}: mask and |error| (black 0, blue, green, red, white ≥ 0.25)", fontsize=7)
-    fig.tight_layout(pad=0.2)
+    fig.tight_layout(pad=0.2, rect=(0, 0, 1, 0.97))
     fig.savefig(path, dpi=80)
     plt.close(fig)
     return True

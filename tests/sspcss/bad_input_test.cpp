@@ -61,7 +61,7 @@ TEST(SspcssBadInput, OutOfRangeParametersAreRefusedWithTheirRange) {
     EXPECT_NE(st.error().message.find(c.range), std::string::npos) << st.error().message;
   }
   EXPECT_EQ(s.params().get_int("poisson_taps"), 32);  // unchanged
-  EXPECT_EQ(s.params().get_real("depth_sigma"), 0.02);
+  EXPECT_EQ(s.params().get_real("depth_sigma"), 0.1);
 }
 
 // No emitter, no penumbra: W_search = W_screen = 0, so the mask is the hard visibility of the

@@ -70,11 +70,12 @@ TEST(SspcssEdgeAwareness, NoBleedingAcrossTheDepthDiscontinuity) {
   for (const char* filter : {"separable", "poisson"}) {
     Probe p = probe(r, s, {{"filter", filter}}, std::string(filter) + "_range");
     ASSERT_EQ(p.box.size(), static_cast<size_t>(kReach)) << filter;
-    // Measured: exactly 1 on the box and exactly 0 on the ground: each side's taps on the other
-    // side are metres off the centre's tangent plane (sigma 0.02 x 6-8 m), so their range weight
-    // underflows to 0; the box's pixels find no blocker and keep their hard visibility.
-    EXPECT_EQ(*std::min_element(p.box.begin(), p.box.end()), 1.0f) << filter << ": shadow bled onto the box";
-    EXPECT_EQ(*std::max_element(p.ground.begin(), p.ground.end()), 0.0f) << filter << ": light bled into the umbra";
+    // Measured with the default depth_sigma 0.1: at most 0.005 across the silhouette (0 with
+    // sigma 0.02, where the other side's range weight underflows); without the range term the
+    // ground next to the box is lit by half. Each side's taps on the other side are metres off the
+    // centre's tangent plane (0.1 x 6-8 m sigma), so their weight is below exp(-2).
+    EXPECT_GE(*std::min_element(p.box.begin(), p.box.end()), 0.99f) << filter << ": shadow bled onto the box";
+    EXPECT_LE(*std::max_element(p.ground.begin(), p.ground.end()), 0.01f) << filter << ": light bled into the umbra";
   }
 }
 
