@@ -268,6 +268,16 @@ void viewer_panel(SandboxController& c) {
   ImGui::SameLine();
   if (ImGui::SmallButton("1:1")) v.zoom = {};
   ImGui::Checkbox("linearise depth", &v.linearize_depth);
+  SandboxController::DebugViews& dv = c.debug_views();
+  ImGui::Checkbox("light frustum", &dv.light_frustum);
+  tooltip("the shadow map's frustum (yellow) and the emitter disk with its direction (orange), drawn over the scene");
+  ImGui::SameLine();
+  ImGui::Checkbox("blocker search", &dv.blocker_region);
+  ImGui::SameLine();
+  ImGui::Checkbox("texel density", &dv.texel_density);
+  tooltip("shadow-map texels per frame pixel on the receivers, log2 heat: blue 1/16 (blocky), green 1, red 16 (aliased)");
+  tooltip("for the pixel under the cursor: its cone to the emitter in the scene, and (viewing a shadow-map-sized "
+          "resource) the region of the map where its blockers can be");
   tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
 }
 
