@@ -107,6 +107,24 @@ void draw_times(GraphViewCache& cache) {
   ImGui::Dummy(ImVec2(width, h + 4));
 }
 
+// The frame's total pass time over the executor's history, with its scale and the budget.
+void draw_history(SandboxController& c, const GraphViewCache& cache) {
+  const auto& timings = c.session().executor().timings();
+  size_t n = 0;
+  for (const exec::PassTiming& t : timings) n = std::max(n, t.history.size());
+  if (n < 2) return;
+  std::vector<float> total(n, 0.0f);
+  for (const exec::PassTiming& t : timings)
+    for (size_t i = 0; i < t.history.size(); ++i) total[n - t.history.size() + i] += t.history[i];
+  const float top = std::max(*std::max_element(total.begin(), total.end()), cache.budget_ms);
+  char overlay[96];
+  std::snprintf(overlay, sizeof overlay, "frame passes, last %zu frames: 0 .. %.2f ms (budget %.2f)", n, top, cache.budget_ms);
+  ImGui::PlotLines("##total_history", total.data(), static_cast<int>(n), 0, overlay, 0.0f, top, ImVec2(-1, 48));
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  const float y = b.y - (b.y - a.y) * (cache.budget_ms / top);
+  ImGui::GetWindowDrawList()->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), IM_COL32(255, 80, 80, 160), 1.0f);
+}
+
 // Physical textures as rows, each version's lifetime (first..last pass) as a bar on it.
 void draw_timeline(const GraphViewCache& cache, int passes) {
   const GraphViewModel& m = cache.model;
@@ -148,6 +166,7 @@ void draw_graph_view(SandboxController& c, GraphViewCache& cache) {
   if (!cache.error.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s", cache.error.c_str());
   else draw_nodes_and_edges(c, cache);
   draw_times(cache);
+  draw_history(c, cache);
   draw_timeline(cache, static_cast<int>(c.session().plan().passes.size()));
 }
 

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/compare_metrics.h"
 #include "app/inspector.h"
 #include "app/shadow_debug.h"
 #include "plugin/frame_graph.h"
@@ -128,6 +129,15 @@ void draw_viewport_overlay(SandboxController& c, const Layout& layout) {
       const float half = std::max(w * 0.5f - 16.0f, 80.0f);
       label(dl, ImVec2(x0 + 8, y0 + 6), "A: " + settings_label(c.session()), std::max(std::min(half, split_x - x0 - 12), 60.0f));
       const std::string right = "B: " + settings_label(*c.secondary());
+      // The statistics on the view itself, so window screenshots carry them.
+      if (cs.stats) {
+        char stats[160];
+        std::snprintf(stats, sizeof stats, "RMSE %.4f  penumbra %s  MAE %.4f  max %.3f", cs.stats->rmse,
+                      penumbra_rmse_text(*cs.stats).c_str(), cs.stats->mae, cs.stats->max_error);
+        std::string line = stats;
+        if (const std::string p = reference_progress_text(c); !p.empty()) line += "  |  " + p;
+        label(dl, ImVec2(x0 + 8, y0 + 28), line, std::max(w - 16, 60.0f));
+      }
       const float rw = std::min(ImGui::CalcTextSize(right.c_str()).x, half);
       label(dl, ImVec2(x0 + w - rw - 8, y0 + 6), right, half);
     } else {
