@@ -364,7 +364,8 @@ Status SandboxController::render_and_compose() {
   ++frames_;
 
   if (viewer_.auto_range && !viewer_.resource.empty() && frames_ % 15 == 1) (void)apply_auto_range(*this);
-  return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr, compare_, viewer_, width_, height_});
+  return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr, compare_, viewer_, width_, height_,
+                                  debug_views_.texel_density});
 }
 
 Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) {

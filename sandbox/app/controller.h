@@ -106,6 +106,13 @@ class SandboxController {
   // Keeps `name` alive in the primary plan (recompiles) and shows it; "" turns the viewer off.
   Status view_resource(const std::string& name);
   CompareState& compare() { return compare_; }
+  // Shadow debug views (drawn by the window over the viewport; texel density by the composer).
+  struct DebugViews {
+    bool light_frustum = false;   // the shadow frustum and the emitter, in the scene
+    bool blocker_region = false;  // the blocker-search cone/region of the pixel under the cursor
+    bool texel_density = false;   // the frame shows shadow-map texels per pixel instead of colour
+  };
+  DebugViews& debug_views() { return debug_views_; }
   // `with` empty: "reference" when registered, else the technique after the primary.
   Status set_compare(bool enabled, const std::string& with = "");
   void set_compare_view(CompareState::View view) { compare_.view = view; }
@@ -162,6 +169,7 @@ class SandboxController {
   DisplayPass display_;
   ViewerSettings viewer_;
   CompareState compare_;
+  DebugViews debug_views_;
   int width_ = 0, height_ = 0;
   std::uint64_t frames_ = 0;
   std::string message_;

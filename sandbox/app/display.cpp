@@ -7,6 +7,8 @@ namespace penumbra::sandbox {
 namespace {
 const gl::ShaderSources kPresent{.vertex = "sandbox/app/shaders/display.vert.glsl",
                                  .fragment = "sandbox/app/shaders/display.frag.glsl"};
+const gl::ShaderSources kDensity{.vertex = "sandbox/app/shaders/display.vert.glsl",
+                                 .fragment = "sandbox/app/shaders/texel_density.frag.glsl"};
 const gl::ShaderSources kDifference{.compute = "sandbox/app/shaders/mask_difference.comp.glsl"};
 
 Status program_status(const gl::ShaderProgram& p) {
@@ -75,6 +77,28 @@ Status DisplayPass::draw(const Layer& layer) {
   prog.set("linearize_depth", layer.linearize_depth ? 1 : 0);
   prog.set("near_far", layer.near_far);
   prog.set("coverage_in_g", layer.coverage_in_g ? 1 : 0);
+  glBindVertexArray(vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glBindSampler(0, 0);
+  return {};
+}
+
+Status DisplayPass::texel_density(const gl::Texture& position, const glm::mat4& light_view_proj, int shadow_size,
+                                  const glm::vec4& uv_rect, float zoom) {
+  gl::ShaderProgram& p = shaders_.get(kDensity);
+  if (Status s = program_status(p); !s) return s;
+  const gl::Program& prog = p.program();
+  framebuffer_->bind();
+  glViewport(0, 0, target_.width(), target_.height());
+  glUseProgram(p.id());
+  glBindTextureUnit(0, position.id());
+  glBindSampler(0, nearest_.id());
+  prog.set("position", 0);
+  prog.set("uv_rect", uv_rect);
+  prog.set("light_view_proj", light_view_proj);
+  prog.set("shadow_size", static_cast<float>(shadow_size));
+  prog.set("zoom", zoom);
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

@@ -58,6 +58,9 @@ class DisplayPass {
   static constexpr float kRefusedColor[4] = {0.35f, 0.04f, 0.06f, 1.0f};
   void show_refused() const;
   Status draw(const Layer& layer);
+  // Shadow-map texels per frame pixel of each receiver (texel_density.frag.glsl), over the target.
+  Status texel_density(const gl::Texture& position, const glm::mat4& light_view_proj, int shadow_size,
+                       const glm::vec4& uv_rect, float zoom);
   // difference.r = |a.r - b.r|, difference.g = receiver coverage (position.w > 0).
   Status difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& position);
   const gl::Texture& difference_texture() const { return difference_; }

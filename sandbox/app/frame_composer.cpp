@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "plugin/frame_graph.h"
+#include "scene/light.h"
 #include "util/png.h"
 
 namespace penumbra::sandbox {
@@ -17,7 +18,15 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
   base.uv_rect = zoomed_uv_rect(in.viewer.zoom);
   gl::Texture* color_a = in.primary.executor().resource(plugin::kColor);
   if (!color_a) return make_error("the frame has no 'color' resource", ErrorKind::internal);
-  if (comparing && in.compare.view == CompareState::View::error) {
+  if (in.texel_density) {
+    gl::Texture* pos = in.primary.executor().resource("gbuffer_position");
+    if (!pos) return make_error("texel density: the frame has no gbuffer_position", ErrorKind::internal);
+    const scene::ShadowFrustum f = scene::shadow_frustum(in.primary.light(), in.primary.scene().bounds);
+    if (Status s = display.texel_density(*pos, f.view_proj, in.primary.settings().shadow_size, base.uv_rect,
+                                         in.viewer.zoom.zoom);
+        !s)
+      return s;
+  } else if (comparing && in.compare.view == CompareState::View::error) {
     gl::Texture* a = in.primary.executor().resource(plugin::kShadowMask);
     gl::Texture* b = in.secondary->executor().resource(plugin::kShadowMask);
     gl::Texture* pos = in.primary.executor().resource("gbuffer_position");

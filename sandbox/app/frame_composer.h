@@ -18,6 +18,7 @@ struct FrameInputs {
   const CompareState& compare;
   const ViewerSettings& viewer;
   int width = 0, height = 0;  // the frame, pixels
+  bool texel_density = false;  // replace the base image by the shadow-map texel density view
 };
 
 Status compose_frame(DisplayPass& display, const FrameInputs& in);

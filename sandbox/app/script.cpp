@@ -29,6 +29,7 @@ constexpr StepName kSteps[] = {
     {"view", StepKind::view},         {"resize", StepKind::resize},
     {"expect_no_gl_error", StepKind::expect_no_gl_error}, {"ground", StepKind::ground},
     {"metrics", StepKind::metrics},   {"inspect", StepKind::inspect},
+    {"graph", StepKind::graph},       {"debug", StepKind::debug},
 };
 
 std::string valid_step_names() {
@@ -105,7 +106,8 @@ void parse_body(ScriptStep& s, const json& v) {
     case StepKind::scene: s.text = need_string(v, "scene"); break;
     case StepKind::technique: s.text = need_string(v, "technique"); break;
     case StepKind::screenshot:
-    case StepKind::metrics: {
+    case StepKind::metrics:
+    case StepKind::graph: {
       const std::string key = step_kind_name(s.kind);
       s.text = need_string(v, key);
       if (s.text.empty()) problem(key + ": the path is empty");
@@ -144,6 +146,16 @@ void parse_body(ScriptStep& s, const json& v) {
       if (s.inspect.out.empty()) problem("inspect.out must name the JSON file to write");
       break;
     }
+    case StepKind::debug:
+      only_keys(v, {"light_frustum", "blocker_region", "texel_density"}, "debug");
+      for (const char* key : {"light_frustum", "blocker_region", "texel_density"})
+        if (v.contains(key)) {
+          if (!v[key].is_boolean()) problem(std::string("debug.") + key + " must be true or false, got " + echo(v[key]));
+          (std::string(key) == "light_frustum"    ? s.light_frustum
+           : std::string(key) == "blocker_region" ? s.blocker_region
+                                                  : s.texel_density) = v[key].get<bool>();
+        }
+      break;
     case StepKind::ground:
       if (!v.is_boolean()) problem("ground must be true or false, got " + echo(v));
       s.flag = v.get<bool>();

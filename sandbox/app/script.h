@@ -24,7 +24,7 @@ namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error, ground, metrics, inspect
+  resize, expect_no_gl_error, ground, metrics, inspect, graph, debug
 };
 const char* step_kind_name(StepKind kind);
 
@@ -76,6 +76,7 @@ struct ScriptStep {
   std::vector<std::pair<std::string, std::string>> assignments;  // set: name -> value text
   int number = 0;    // wait frames, shadow size (texels)
   bool flag = false;  // ground: the switch
+  std::optional<bool> light_frustum, blocker_region, texel_density;  // debug: shadow debug views
   int width = 0, height = 0;  // resize (pixels)
   CameraStep camera;
   LightStep light;

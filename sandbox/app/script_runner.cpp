@@ -1,6 +1,7 @@
 #include "app/script_runner.h"
 
 #include "app/compare_metrics.h"
+#include "app/graph_export.h"
 #include "app/inspector.h"
 
 #include <cstdio>
@@ -49,6 +50,12 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
     case StepKind::reset: return c.reset_param(step.text);
     case StepKind::ground: return c.set_ground(step.flag);
     case StepKind::metrics: return write_metrics(c, step.text);
+    case StepKind::graph: return write_graph_view(c, step.text);
+    case StepKind::debug:
+      if (step.light_frustum) c.debug_views().light_frustum = *step.light_frustum;
+      if (step.blocker_region) c.debug_views().blocker_region = *step.blocker_region;
+      if (step.texel_density) c.debug_views().texel_density = *step.texel_density;
+      return {};
     case StepKind::inspect: return write_inspection(c, step.inspect.x, step.inspect.y, step.inspect.out);
     case StepKind::camera:
       if (step.camera.choice) {

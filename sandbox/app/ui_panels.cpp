@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "app/compare_metrics.h"
+#include "app/graph_view.h"
 #include "app/inspector.h"
 #include "app/param_applicability.h"
 #include "app/viewport_overlay.h"
@@ -186,31 +187,13 @@ void technique_panel(SandboxController& c, UiState& ui) {
   }
 }
 
-void graph_panel(SandboxController& c) {
-  if (!ImGui::CollapsingHeader("Graph")) return;
+void graph_panel(SandboxController& c, UiState& ui) {
+  if (!ImGui::CollapsingHeader("Graph", ImGuiTreeNodeFlags_DefaultOpen)) return;
   plugin::TechniqueSession& s = c.session();
   const graph::CompiledPlan& plan = s.plan();
-  const auto& timings = s.executor().timings();
-  double total = 0.0;
-  for (size_t i = 0; i < plan.passes.size(); ++i) {
-    const graph::PlannedPass& p = plan.passes[i];
-    const exec::PassTiming* t = i < timings.size() ? &timings[i] : nullptr;
-    if (t) total += t->last_ms;
-    ImGui::Text("%2zu %-22s %6.3f ms", i, p.name.c_str(), t ? t->last_ms : 0.0);
-    tooltip("type " + p.type + (p.barrier_reasons.empty() ? "" : "\nbarriers: " + graph::barrier_bits_to_string(p.barriers)));
-    if (t && !t->history.empty()) {
-      std::vector<float> h(t->history.begin(), t->history.end());
-      ImGui::PushID(static_cast<int>(i));
-      ImGui::PlotLines("##history", h.data(), static_cast<int>(h.size()), 0, nullptr, 0.0f, FLT_MAX,
-                       ImVec2(0, 24));
-      ImGui::PopID();
-    }
-  }
-  for (const std::string& n : plan.culled) ImGui::TextColored(kGrey, "   %-22s culled", n.c_str());
-  for (const std::string& n : plan.disabled) ImGui::TextColored(kGrey, "   %-22s disabled", n.c_str());
-  ImGui::Text("total %.3f ms (%s)", total,
-              s.executor().timing_mode() == exec::TimingMode::gpu_timestamps ? "GPU timestamps"
-                                                                              : "glFinish + CPU clock");
+  draw_graph_view(c, ui.graph_view);
+  ImGui::TextDisabled("times: %s", s.executor().timing_mode() == exec::TimingMode::gpu_timestamps ? "GPU timestamps"
+                                                                                                   : "glFinish + CPU clock");
   ImGui::Text("memory: naive %s, assigned %s", mib(plan.memory.naive_bytes).c_str(),
               mib(plan.memory.assigned_bytes).c_str());
   ImGui::Text("pool: %zu textures, %s", s.pool().texture_count(), mib(s.pool().bytes()).c_str());
@@ -285,6 +268,16 @@ void viewer_panel(SandboxController& c) {
   ImGui::SameLine();
   if (ImGui::SmallButton("1:1")) v.zoom = {};
   ImGui::Checkbox("linearise depth", &v.linearize_depth);
+  SandboxController::DebugViews& dv = c.debug_views();
+  ImGui::Checkbox("light frustum", &dv.light_frustum);
+  tooltip("the shadow map's frustum (yellow) and the emitter disk with its direction (orange), drawn over the scene");
+  ImGui::SameLine();
+  ImGui::Checkbox("blocker search", &dv.blocker_region);
+  ImGui::SameLine();
+  ImGui::Checkbox("texel density", &dv.texel_density);
+  tooltip("shadow-map texels per frame pixel on the receivers, log2 heat: blue 1/16 (blocky), green 1, red 16 (aliased)");
+  tooltip("for the pixel under the cursor: its cone to the emitter in the scene, and (viewing a shadow-map-sized "
+          "resource) the region of the map where its blockers can be");
   tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
 }
 
@@ -392,7 +385,7 @@ void draw_sandbox_ui(SandboxController& c, UiState& ui, const Layout& layout) {
   scene_panel(c, ui);
   light_panel(c);
   technique_panel(c, ui);
-  graph_panel(c);
+  graph_panel(c, ui);
   viewer_panel(c);
   compare_panel(c, ui);
   ImGui::PopItemWidth();

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/controller.h"
+#include "app/graph_view.h"
 #include "app/layout.h"
 
 namespace penumbra::sandbox {
@@ -15,6 +16,7 @@ struct UiState {
   char metrics_path[512] = "penumbra-metrics.json";
   bool screenshot_requested = false;  // set by the button, served by the host after rendering
   int panel_width = kDefaultPanelWidth;  // pixels; the divider drags it
+  GraphViewCache graph_view;             // the plan's dot layout, redone when the plan changes
 
   // A transient note ("saved x.png"): shown for kNoteSeconds, then fades out over kFadeSeconds.
   static constexpr double kNoteSeconds = 4.0, kFadeSeconds = 1.5;

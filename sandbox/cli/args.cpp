@@ -111,4 +111,10 @@ Result<std::pair<int, int>> parse_size(const std::string& option, const std::str
   return std::pair{*w, *h};
 }
 
+int report_failure(const char* command, const Error& e) {
+  std::fprintf(stderr, "penumbra %s: %s\n", command, e.to_string().c_str());
+  if (!e.details.empty()) std::fprintf(stderr, "%s", e.details.c_str());
+  return e.exit_code();
+}
+
 }  // namespace penumbra::cli

@@ -40,4 +40,7 @@ Result<int> parse_int(const std::string& option, const std::string& text, int lo
 // A finite number in [lo, hi]; errors name the option and the range.
 Result<double> parse_real(const std::string& option, const std::string& text, double lo, double hi);
 
+// Prints "penumbra COMMAND: error" and its details on stderr; returns the error's exit code.
+int report_failure(const char* command, const Error& e);
+
 }  // namespace penumbra::cli

@@ -32,11 +32,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     plugin_dir_option_spec(),
 });
 
-int fail(const Error& e) {
-  std::fprintf(stderr, "penumbra bench: %s\n", e.to_string().c_str());
-  if (!e.details.empty()) std::fprintf(stderr, "%s", e.details.c_str());
-  return e.exit_code();
-}
+int fail(const Error& e) { return report_failure("bench", e); }
 
 struct BenchOptions {
   std::vector<TechniqueSpec> techniques;

@@ -46,11 +46,7 @@ const std::vector<OptionSpec> kSpecs = {
 // Frames rendered before the mask is read: the first compiles shaders, none is timed.
 constexpr int kFramesPerEvaluation = 2;
 
-int fail(const Error& e) {
-  std::fprintf(stderr, "penumbra calibrate: %s\n", e.to_string().c_str());
-  if (!e.details.empty()) std::fprintf(stderr, "%s", e.details.c_str());
-  return e.exit_code();
-}
+int fail(const Error& e) { return report_failure("calibrate", e); }
 
 struct CalibrateOptions {
   TechniqueSpec technique;

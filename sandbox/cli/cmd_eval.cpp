@@ -54,11 +54,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
 
 constexpr int kWarmupFrames = 3;
 
-int fail(const Error& e) {
-  std::fprintf(stderr, "penumbra eval: %s\n", e.to_string().c_str());
-  if (!e.details.empty()) std::fprintf(stderr, "%s", e.details.c_str());
-  return e.exit_code();
-}
+int fail(const Error& e) { return report_failure("eval", e); }
 
 struct EvalOptions {
   std::string scene_name;

@@ -61,9 +61,12 @@ std::string range_text(const graph::ParamDesc& p) {
     for (const std::string& o : p.options) s += (s.empty() ? "" : " | ") + o;
     return s;
   }
-  if (p.has_range())
-    s = "[" + graph::param_value_to_string(p.min) + ", " + graph::param_value_to_string(p.max) + "]";
-  if (!p.unit.empty()) s += (s.empty() ? "" : " ") + p.unit;
+  // Appends, not a chain of operator+ on temporaries: GCC 12 -O2 warns (-Wrestrict) on that chain.
+  if (p.has_range()) {
+    s.append("[").append(graph::param_value_to_string(p.min)).append(", ");
+    s.append(graph::param_value_to_string(p.max)).append("]");
+  }
+  if (!p.unit.empty()) s.append(s.empty() ? "" : " ").append(p.unit);
   return s;
 }
 

@@ -155,8 +155,9 @@ TEST(ShippedPresets, PaperPresetsApplyToTheirTechniquesAndCompile) {
       auto applied = plugin::preset_applied(*preset, name, defaults);
       ASSERT_TRUE(applied) << name << "@" << preset_name << ": " << applied.error().to_string();
       // PCSS is physically driven in the paper already (Fernando 2005): its defaults are its paper.
-      if (std::string(name) != "pcss")
+      if (std::string(name) != "pcss") {
         EXPECT_NE(applied->to_json(), defaults.to_json()) << name << "@" << preset_name << " is the defaults";
+      }
       auto frame = plugin::compose_frame_graph(*desc);
       ASSERT_TRUE(frame) << frame.error().to_string();
       auto plan = graph::compile(*frame, techniques().library.declarations(), *applied, {1920, 1080, 2048});

@@ -233,5 +233,23 @@ TEST_F(Fixture, ParametersWithoutEffectAreFoundFromTheGraph) {
   }
 }
 
+// The texel-density view: an 8x larger shadow map puts 8x more texels under each pixel, so
+// the log2 heat moves from blue towards red.
+TEST_F(Fixture, TexelDensityGrowsWithTheShadowMapSize) {
+  controller->debug_views().texel_density = true;
+  auto redness = [&](int shadow) {
+    EXPECT_TRUE(controller->set_shadow_size(shadow));
+    EXPECT_TRUE(controller->render_frame());
+    const gl::Texture& t = controller->display().target();
+    std::vector<unsigned char> px(static_cast<size_t>(t.width()) * t.height() * 4);
+    glGetTextureImage(t.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(px.size()), px.data());
+    double sum = 0.0;
+    for (size_t i = 0; i < px.size(); i += 4) sum += double(px[i]) - double(px[i + 2]);
+    return sum / double(px.size() / 4);
+  };
+  const double low = redness(32), high = redness(256);
+  EXPECT_GT(high, low + 20.0) << "mean red - blue: 32 texels " << low << ", 256 texels " << high;
+}
+
 }  // namespace
 }  // namespace penumbra::sandbox

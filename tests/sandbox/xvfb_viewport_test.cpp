@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <vector>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -181,6 +183,53 @@ TEST(SandboxXvfbViewport, PixelInspectorReadsTheTexelUnderAZoomedPixel) {
   const nlohmann::json m = read_json(out("m.json"));
   EXPECT_NEAR(m["viewer"]["min"].get<double>(), 0.25, 1e-3) << m["viewer"].dump();
   EXPECT_NEAR(m["viewer"]["max"].get<double>(), 0.5, 1e-3) << m["viewer"].dump();
+  if (!HasFailure()) fs::remove_all(dir);
+}
+
+// The graph view of a real technique: every pass of the plan is a node (in execution order),
+// its disabled passes are listed with their condition, nodes do not overlap, edges join nodes.
+TEST(SandboxXvfbViewport, GraphViewListsEveryPass) {
+  const std::string x = xvfb();
+  ASSERT_FALSE(x.empty()) << "xvfb-run is not installed: run scripts/setup.sh (installs xvfb)";
+  const fs::path dir = penumbra::test::fresh_temp_dir("sandbox_xvfb_graph");
+  auto out = [&](const char* name) { return (dir / name).string(); };
+  const std::string script = script_file(
+      dir, R"([{"technique": "pmchss"}, {"wait": 3}, {"graph": ")" + out("g.json") + R"("},
+               {"metrics": ")" + out("m.json") + R"("}, {"screenshot": ")" + out("graph.png") + R"("}])");
+  RunResult r = run_in_xvfb(x, std::string(SANDBOX_TEST_HOST) + " --scene ball" + kFrame + " --script " + script);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json g = read_json(out("g.json")), m = read_json(out("m.json"));
+  std::vector<std::string> plan, shown, disabled;
+  for (const auto& p : m["passes"]) plan.push_back(p["name"]);
+  std::set<std::string> names;
+  for (const auto& p : g["passes"]) {
+    names.insert(p["name"].get<std::string>());
+    if (p["state"] == "runs") shown.push_back(p["name"]);
+    if (p["state"] == "disabled") {
+      disabled.push_back(p["name"]);
+      EXPECT_NE(p["why"].get<std::string>().find("enabled is"), std::string::npos) << p.dump();
+    }
+  }
+  ASSERT_GE(plan.size(), 3u);
+  EXPECT_EQ(shown, plan) << "every pass of the plan, in execution order";
+  EXPECT_FALSE(disabled.empty()) << "pmchss's default variant leaves the min-filter passes disabled";
+  for (const auto& e : g["edges"]) {
+    EXPECT_TRUE(names.count(e["from"].get<std::string>())) << e.dump();
+    EXPECT_TRUE(names.count(e["to"].get<std::string>())) << e.dump();
+  }
+  EXPECT_GE(g["edges"].size(), plan.size() - 1);
+  const auto& ps = g["passes"];
+  for (size_t i = 0; i < ps.size(); ++i)
+    for (size_t j = i + 1; j < ps.size(); ++j) {
+      const double dx = std::abs(ps[i]["x"].get<double>() - ps[j]["x"].get<double>());
+      const double dy = std::abs(ps[i]["y"].get<double>() - ps[j]["y"].get<double>());
+      EXPECT_TRUE(dx >= 0.5 * (ps[i]["w"].get<double>() + ps[j]["w"].get<double>()) - 0.5 ||
+                  dy >= 0.5 * (ps[i]["h"].get<double>() + ps[j]["h"].get<double>()) - 0.5)
+          << ps[i]["name"] << " overlaps " << ps[j]["name"];
+    }
+  int slowest = 0;
+  for (const auto& p : ps) slowest += p["slowest"].get<bool>() ? 1 : 0;
+  EXPECT_LE(slowest, 1);
   if (!HasFailure()) fs::remove_all(dir);
 }
 
