@@ -13,16 +13,16 @@
 #include <string>
 
 #include "plugin/technique.h"
-#include "support/cli_run.h"
+#include "test_support/run_command.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::test {
 namespace {
 
-CliRun run_cli(const std::string& args) { return test::run_cli(PENUMBRA_CLI, args); }
+CommandRun run_cli(const std::string& args) { return test::run_command(std::string(PENUMBRA_CLI) + " " + args); }
 
 TEST(TechniquesCommand, JsonListsEveryParameterOfEveryTechnique) {
-  CliRun r = run_cli("techniques --json");
+  CommandRun r = run_cli("techniques --json");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   nlohmann::json list = nlohmann::json::parse(r.output, nullptr, false);
   ASSERT_FALSE(list.is_discarded()) << r.output;
@@ -68,7 +68,7 @@ TEST(TechniquesCommand, JsonListsEveryParameterOfEveryTechnique) {
 }
 
 TEST(TechniquesCommand, TextListsParametersAndBadOptionsExitTwo) {
-  CliRun text = run_cli("techniques");
+  CommandRun text = run_cli("techniques");
   ASSERT_EQ(text.exit_code, 0) << text.output;
   EXPECT_NE(text.output.find("--set blocker_samples=16"), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("int, [4, 64]"), std::string::npos) << text.output;
@@ -79,16 +79,16 @@ TEST(TechniquesCommand, TextListsParametersAndBadOptionsExitTwo) {
 
 TEST(RenderCommand, BadSetValuesExitTwoWithTheValidRange) {
   const std::string base = "render --context osmesa --scene ball --size 32x32 --mask /dev/null --technique ";
-  CliRun range = run_cli(base + "pcss --set blocker_samples=100");
+  CommandRun range = run_cli(base + "pcss --set blocker_samples=100");
   EXPECT_EQ(range.exit_code, 2) << range.output;
   EXPECT_NE(range.output.find("[4, 64]"), std::string::npos) << range.output;
-  CliRun unknown = run_cli(base + "pcf --set bogus=1");
+  CommandRun unknown = run_cli(base + "pcf --set bogus=1");
   EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
   EXPECT_NE(unknown.output.find("box_size"), std::string::npos) << "lists the valid keys: " << unknown.output;
-  CliRun option = run_cli(base + "pcf --set kernel=gauss");
+  CommandRun option = run_cli(base + "pcf --set kernel=gauss");
   EXPECT_EQ(option.exit_code, 2) << option.output;
   EXPECT_NE(option.output.find("box, vogel"), std::string::npos) << option.output;
-  CliRun even = run_cli(base + "pcf --set box_size=4");
+  CommandRun even = run_cli(base + "pcf --set box_size=4");
   EXPECT_EQ(even.exit_code, 2) << even.output;
   EXPECT_NE(even.output.find("odd"), std::string::npos) << even.output;
 }
@@ -98,16 +98,16 @@ TEST(RenderCommand, BadSetValuesExitTwoWithTheValidRange) {
 TEST(GraphCommand, DocumentedExamplesAndTechniqueGraphsCompile) {
   int examples = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(PENUMBRA_SOURCE_DIR) + "/docs/graph-examples")) {
-    CliRun r = run_cli("graph " + entry.path().string());
+    CommandRun r = run_cli("graph " + entry.path().string());
     EXPECT_EQ(r.exit_code, 0) << entry.path() << "\n" << r.output;
     ++examples;
   }
   EXPECT_GE(examples, 3);
   const std::string pmchss = std::string(PENUMBRA_SOURCE_DIR) + "/techniques/pmchss/pmchss.json";
-  CliRun composed = run_cli("graph " + pmchss + " --set variant=min_filter --set checkerboard=true");
+  CommandRun composed = run_cli("graph " + pmchss + " --set variant=min_filter --set checkerboard=true");
   EXPECT_EQ(composed.exit_code, 0) << composed.output;
   EXPECT_NE(composed.output.find("composed into the frame"), std::string::npos) << composed.output;
-  CliRun raw = run_cli("graph " + pmchss + " --no-frame");
+  CommandRun raw = run_cli("graph " + pmchss + " --no-frame");
   EXPECT_EQ(raw.exit_code, 2) << raw.output;
   EXPECT_NE(raw.output.find("gbuffer_position"), std::string::npos) << raw.output;
 }
@@ -130,7 +130,7 @@ TEST(TechniqueDocs, ReadmeParameterTablesAreGeneratedFromTheJson) {
     size_t table = readme.find('\n', at) + 1;
     size_t end = readme.find("<!-- end of parameters -->", table);
     ASSERT_NE(end, std::string::npos);
-    CliRun r = run_cli("techniques --markdown " + name);
+    CommandRun r = run_cli("techniques --markdown " + name);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_EQ(readme.substr(table, end - table), r.output)
         << "run scripts/update-parameter-tables.sh after changing " << name << "'s JSON";

@@ -14,7 +14,7 @@
 #include "mpg_rig.h"
 #include "mpg_settings.h"
 #include "plugin/technique.h"
-#include "support/cli_run.h"
+#include "test_support/run_command.h"
 #include "techniques/builtin_techniques.h"
 
 using namespace penumbra;
@@ -30,8 +30,10 @@ bool has_pass(const graph::CompiledPlan& plan, const std::string& name) {
   return std::any_of(plan.passes.begin(), plan.passes.end(), [&](const graph::PlannedPass& p) { return p.name == name; });
 }
 
-using penumbra::test::CliRun;
-CliRun run_cli(const std::string& args) { return penumbra::test::run_cli(PENUMBRA_CLI, args); }
+using penumbra::test::CommandRun;
+CommandRun run_cli(const std::string& args) {
+  return penumbra::test::run_command(std::string(PENUMBRA_CLI) + " " + args);
+}
 
 }  // namespace
 
@@ -94,11 +96,11 @@ TEST(MpgGraph, CliFramePlanHasTheExpectedPassCount) {
   for (const Case& c : {Case{"", 9 + 10}, Case{"--set max_passes=7", 9 + 7}, Case{"--set max_passes=32", 9 + 32},
                         Case{"--set alteration=pcf", 9 + 1}, Case{"--set alteration=gaussian", 9 + 2},
                         Case{"--set umbra_early_out=true --set dilation=false", 9 + 10}}) {
-    CliRun r = run_cli("graph " + graph + " " + c.sets);
+    CommandRun r = run_cli("graph " + graph + " " + c.sets);
     ASSERT_EQ(r.exit_code, 0) << c.sets << "\n" << r.output;
     EXPECT_NE(r.output.find(", " + std::to_string(c.passes) + " passes"), std::string::npos) << c.sets << "\n" << r.output;
   }
-  CliRun bad = run_cli("graph " + graph + " --set max_passes=33");
+  CommandRun bad = run_cli("graph " + graph + " --set max_passes=33");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("[1, 32]"), std::string::npos) << bad.output;
 }

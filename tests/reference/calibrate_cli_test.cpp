@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support/cli_run.h"
+#include "test_support/run_command.h"
 #include "test_support/temp_dir.h"
 
 namespace penumbra::test {
@@ -16,7 +16,9 @@ namespace {
 
 const std::string kTiny = " --context osmesa --size 64x48 --rays 16 --shadow-size 512";
 
-CliRun calibrate(const std::string& args) { return run_cli(PENUMBRA_CLI, "calibrate" + kTiny + " " + args); }
+CommandRun calibrate(const std::string& args) {
+  return run_command(std::string(PENUMBRA_CLI) + " calibrate" + kTiny + " " + args);
+}
 
 // "ball  fit  0.1234  0.0987 ..." -> {start, fitted}
 std::pair<double, double> table_row(const std::string& output, const std::string& scene, const std::string& set) {
@@ -30,7 +32,7 @@ TEST(CalibrateCli, FitsImprovesOnTheStartAndWritesALoadablePreset) {
   const auto dir = fresh_temp_dir("calibrate_cli");
   const std::string preset = (dir / "fitted.json").string();
   // The paper's constants are far from this scene's light: the fit must move them.
-  CliRun r = calibrate("--technique pmchss@paper:variant=regular --scenes ball --validate poles "
+  CommandRun r = calibrate("--technique pmchss@paper:variant=regular --scenes ball --validate poles "
                        "--params shadow_filter_max_size --evals 8 --out " + preset);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("eval   1/8"), std::string::npos) << r.output;  // progress, one line per evaluation
@@ -47,8 +49,9 @@ TEST(CalibrateCli, FitsImprovesOnTheStartAndWritesALoadablePreset) {
   EXPECT_EQ(j["parameters"]["penumbra_mapping"], "paper");  // from the preset it started at
   EXPECT_NE(j["parameters"]["shadow_filter_max_size"].get<double>(), 0.002);
 
-  CliRun e = run_cli(PENUMBRA_CLI, "eval --context osmesa --scene ball --size 64x48 --rays 16 --shadow-size 512 "
-                                   "--frames 1 --techniques pmchss@" + preset);
+  CommandRun e = run_command(std::string(PENUMBRA_CLI) +
+                             " eval --context osmesa --scene ball --size 64x48 --rays 16 --shadow-size 512 "
+                             "--frames 1 --techniques pmchss@" + preset);
   EXPECT_EQ(e.exit_code, 0) << e.output;
 }
 
@@ -68,7 +71,7 @@ TEST(CalibrateCli, BadInputExitsTwoAndSaysWhy) {
            {"--technique pmchss --scenes nowhere.gltf", "nowhere.gltf"},
            {"--technique pmchss --scenes ball --evals 0", "evals"},
        }) {
-    CliRun r = calibrate(c.args);
+    CommandRun r = calibrate(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
   }
