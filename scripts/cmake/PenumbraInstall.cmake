@@ -29,6 +29,13 @@ if(TARGET penumbra_test_support)
   list(APPEND install_targets penumbra_test_support)
   set(PENUMBRA_INSTALL_TEST_SUPPORT ON)
 endif()
+if(PENUMBRA_SANITIZE)
+  # An instrumented install (the asan preset): whoever links its libraries needs the sanitizer
+  # runtimes, which the build tree gets from add_link_options().
+  foreach(target ${install_targets})
+    target_link_options(${target} INTERFACE $<INSTALL_INTERFACE:-fsanitize=address,undefined>)
+  endforeach()
+endif()
 install(TARGETS ${install_targets} EXPORT PenumbraTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
