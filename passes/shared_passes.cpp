@@ -28,4 +28,9 @@ exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry) {
   return library;
 }
 
+Result<graph::GraphDesc> load_technique_graph(const plugin::TechniqueRegistry& registry,
+                                              const plugin::Technique& technique) {
+  return plugin::load_technique_graph(technique, make_pass_library(registry).declarations());
+}
+
 }  // namespace penumbra

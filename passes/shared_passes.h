@@ -11,4 +11,9 @@ void register_shared_passes(exec::PassLibrary& library);
 // pass types (built-ins and plugins alike).
 exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry);
 
+// plugin::load_technique_graph with the pass types of make_pass_library(registry): a technique's
+// graph with its exposed parameters described, for code that has a registry but no library.
+Result<graph::GraphDesc> load_technique_graph(const plugin::TechniqueRegistry& registry,
+                                              const plugin::Technique& technique);
+
 }  // namespace penumbra

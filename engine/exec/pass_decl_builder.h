@@ -75,6 +75,12 @@ class PassDeclBuilder {
     if (!decl_.params.empty()) decl_.params.back().step = n;
     return *this;
   }
+  // The parameter added last has no default: every pass of this type must bind it (its
+  // declared default is then only what a UI starts from).
+  PassDeclBuilder& required() {
+    if (!decl_.params.empty()) decl_.params.back().required = true;
+    return *this;
+  }
   PassDeclBuilder& param(graph::ParamDesc desc) {
     decl_.params.push_back(std::move(desc));
     return *this;

@@ -1,7 +1,7 @@
 // Stage: bind passes. For every declared pass, the bindings that apply for this compile's
 // parameter values (graph_desc.h's binding rule): per slot the first binding whose `when`
-// holds; per pass-type parameter the first applying binding, else the graph parameter of the
-// same name (implicit binding), else the type's default. Validation checks what this chose.
+// holds; per pass-type parameter the first applying binding, else the graph parameter exposing
+// it, else the type's default. Nothing binds by name. Validation checks what this chose.
 #include <algorithm>
 
 #include "graph/compile_state.h"
@@ -54,7 +54,12 @@ void bind_params(const CompileState& s, const PassDecl& p, BoundPass& out) {
       bp.binding = chosen;
       if (!chosen->reference.empty()) bp.graph_param = s.params.find(chosen->reference);
     } else {
-      bp.graph_param = s.params.find(d.name);
+      for (const ParamExposure& e : s.graph.exposures)
+        if (e.pass == p.name && e.pass_param == d.name) {
+          bp.exposure = &e;
+          bp.graph_param = s.params.find(e.parameter);
+          break;
+        }
     }
     out.params.push_back(bp);
   }

@@ -17,6 +17,7 @@ struct ConditionState {
   bool holds = false;   // its value for this compile's parameters (when valid)
   GraphErrorCode code = GraphErrorCode::bad_condition;
   std::string problem;  // when !valid
+  std::vector<std::string> references;  // the parameters it reads (when parsed)
 };
 
 // A declared pass with the bindings that apply for this compile's parameter values
@@ -24,8 +25,9 @@ struct ConditionState {
 // the pass type.
 struct BoundParam {
   const ParamDesc* desc = nullptr;        // the pass type's declaration
-  const ParamBinding* binding = nullptr;  // the applying binding; null: implicit or default
-  const ParamDesc* graph_param = nullptr; // the graph parameter it reads ($ or implicit); null: constant
+  const ParamBinding* binding = nullptr;  // the applying binding; null: exposed or default
+  const ParamExposure* exposure = nullptr; // the graph parameter exposing it, when no binding applies
+  const ParamDesc* graph_param = nullptr; // the graph parameter it reads ($ or exposed); null: constant
 };
 
 // A slot binding with its names looked up once (validation and versioning both need them).
@@ -115,12 +117,18 @@ struct CompileState {
   int existing_version(int resource, int version) const;
 };
 
+// Where the graph declares parameter `name`, for messages: "/parameters/N" in a file, else its name.
+std::string param_location(const CompileState& s, const std::string& name);  // validate.cpp
+
 // The stages, in the order compile() runs them; compile.cpp says what each decides, and each
 // lives in the file of its name.
 void index_resources(CompileState& s);              // index.cpp
 void evaluate_conditions(CompileState& s);          // conditions.cpp
 void bind_passes(CompileState& s);                  // bind.cpp
-void validate_declarations(CompileState& s);        // validate.cpp
+void validate_declarations(CompileState& s);        // validate.cpp, validate_parameters.cpp
+// Part of validate_declarations: what no single pass shows (graph parameters that reach nothing,
+// names taken from the frame, exposures compile() was given unresolved).
+void validate_parameter_graph(CompileState& s);      // validate_parameters.cpp
 void expand_passes(CompileState& s);                // expand.cpp
 void resolve_versions(CompileState& s);             // versions.cpp
 void cull_passes(CompileState& s);                  // cull.cpp

@@ -27,6 +27,7 @@ const ConditionState& evaluate(CompileState& s, const std::string& text) {
     c.problem = parsed.error().message;
     return c;
   }
+  c.references = parsed->references();
   if (std::optional<ConditionProblem> p = parsed->check(s.params)) {
     c.code = code_of(p->kind);
     c.problem = p->message;

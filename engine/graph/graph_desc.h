@@ -17,8 +17,9 @@
 //  - A slot or parameter may have several bindings, each with a `when` condition on structural
 //    parameters (condition.h); the first whose condition holds applies ("" always holds, so it
 //    ends the list). None applying: the slot is unbound.
-//  - A pass parameter with no applying binding binds to the graph parameter of the same name
-//    when there is one (implicit binding), else it takes the pass type's default.
+//  - A pass parameter with no applying binding takes the value of the graph parameter that
+//    exposes it (ParamExposure), else the pass type's default. Nothing binds by name: a pass
+//    parameter that shares a graph parameter's name but is bound to neither is an error.
 //  - A `$`-bound parameter's graph declaration must fit the pass type's: range inside the pass
 //    type's range, enum options among its options, the same unit where both name one.
 #include <string>
@@ -48,7 +49,27 @@ struct ParamBinding {
   std::string reference;  // technique parameter name without '$'; empty = constant
   std::string location;
   std::string when;       // condition choosing this binding; "" = always
-  bool unbound = false;   // chosen, this binding leaves the parameter to the implicit/default rule
+  bool unbound = false;   // chosen, this binding leaves the parameter to its exposure or default
+};
+
+// Which fields of an exposing parameter's declaration the graph states itself; the others come
+// from the pass type's declaration of the exposed parameter.
+struct StatedFields {
+  bool type = false, default_value = false, min = false, max = false, unit = false, description = false,
+       options = false, step = false;
+};
+
+// A graph parameter that exposes a pass's parameter under its own name ("exposes": "pass.param",
+// docs/graph-format.md "Parameters"): the pass parameter is described once, by its pass type;
+// the graph parameter inherits the description and states only what it changes (typically the
+// default). The exposure is also the pass parameter's binding.
+struct ParamExposure {
+  std::string parameter;   // the graph parameter
+  std::string pass;        // a pass of this graph, by name
+  std::string pass_param;  // a parameter of that pass's type
+  std::string location;    // JSON pointer of the "exposes" key
+  StatedFields stated;
+  bool resolved = false;   // resolve_exposures() (exposures.h) filled in the description
 };
 
 struct PassDecl {
@@ -61,6 +82,8 @@ struct PassDecl {
   std::string repeat_reference; // technique parameter name without '$'
   bool side_effect = false;     // culling root even if nothing reads its outputs
   std::string location;         // JSON pointer, e.g. "/passes/2"
+  bool frame = false;           // one of the frame's own passes (gbuffer, lighting): no graph
+                                // parameter may bind it or take one of its parameters' names
 };
 
 struct GraphDesc {
@@ -68,6 +91,7 @@ struct GraphDesc {
   std::string description;              // one paragraph: what the technique is (CLI, sandbox)
   std::string source_file;              // for error messages; "" from C++
   std::vector<ParamDesc> parameters;    // the technique's parameters
+  std::vector<ParamExposure> exposures; // parameters that expose a pass parameter
   std::vector<ResourceDecl> resources;
   std::vector<PassDecl> passes;
   std::vector<std::string> outputs;     // logical resource names (their final version)

@@ -26,6 +26,13 @@ const char* graph_error_code_name(GraphErrorCode code) {
     case GraphErrorCode::repeat_out_of_range: return "repeat_out_of_range";
     case GraphErrorCode::bad_condition: return "bad_condition";
     case GraphErrorCode::unknown_output: return "unknown_output";
+    case GraphErrorCode::param_unreached: return "param_unreached";
+    case GraphErrorCode::param_unbound: return "param_unbound";
+    case GraphErrorCode::param_bound_twice: return "param_bound_twice";
+    case GraphErrorCode::param_described_twice: return "param_described_twice";
+    case GraphErrorCode::unknown_pass: return "unknown_pass";
+    case GraphErrorCode::param_shadows_frame: return "param_shadows_frame";
+    case GraphErrorCode::exposure_unresolved: return "exposure_unresolved";
   }
   return "?";
 }

@@ -33,6 +33,14 @@ enum class GraphErrorCode {
   repeat_out_of_range,
   bad_condition,            // `enabled` does not parse or has the wrong type
   unknown_output,
+  // Parameter bindings (docs/graph-format.md "Parameters"):
+  param_unreached,          // a graph parameter no pass, condition, size or repeat reads in any variant
+  param_unbound,            // a pass parameter with neither binding nor default, or unbound beside a namesake
+  param_bound_twice,        // an exposure and a binding (or two exposures) of one pass parameter
+  param_described_twice,    // an exposing parameter states a field equal to the one it inherits
+  unknown_pass,             // "exposes" names a pass the graph does not declare
+  param_shadows_frame,      // a graph parameter takes the name of a frame pass's parameter
+  exposure_unresolved,      // compile() given a graph whose exposures resolve_exposures() did not fill in
 };
 
 const char* graph_error_code_name(GraphErrorCode code);

@@ -2,6 +2,7 @@
 // and in parameters_json.cpp). The format is docs/graph-format.md.
 #include "graph/graph_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -106,6 +107,8 @@ class GraphReader {
     for (const Json& line : *it) out += (out.empty() ? "" : " ") + line.get<std::string>();
   }
 
+  // A parameter is described in full, or exposes a pass parameter ("exposes": "pass.param") and
+  // states only what it changes; resolve_exposures() (exposures.h) fills in the rest.
   void read_parameter(const Json& j, const std::string& ptr, GraphDesc& g) {
     if (!j.is_object()) {
       error(GraphErrorCode::wrong_json_type, ptr, "a parameter must be an object");
@@ -113,15 +116,30 @@ class GraphReader {
     }
     size_t before = errors_.size();
     ParamDesc d;
+    ParamExposure exposure;
     std::string text;
     get_string(j, "name", ptr, d.name, true);
-    if (get_string(j, "type", ptr, text, true)) {
+    const bool exposes = j.contains("exposes");
+    if (exposes && get_string(j, "exposes", ptr, text, true)) {
+      const size_t dot = text.rfind('.');
+      if (dot == std::string::npos || dot == 0 || dot + 1 == text.size())
+        error(GraphErrorCode::wrong_json_type, ptr + "/exposes",
+              "\"exposes\" must be \"pass.parameter\", got \"" + shortened(text) + "\"");
+      else {
+        exposure.pass = text.substr(0, dot);
+        exposure.pass_param = text.substr(dot + 1);
+      }
+    }
+    StatedFields& stated = exposure.stated;
+    stated = {j.contains("type"),        j.contains("default"), j.contains("min"),     j.contains("max"),
+              j.contains("unit"),        j.contains("description"), j.contains("options"), j.contains("step")};
+    if (get_string(j, "type", ptr, text, !exposes)) {
       std::optional<ParamType> t = parse_param_type(text);
       if (!t) error(GraphErrorCode::wrong_json_type, ptr + "/type", "type must be bool, int, float or enum, got \"" + shortened(text) + "\"");
       else d.type = *t;
     }
     check_keys(j, ptr, {"name", "type", "default", "min", "max", "step", "unit", "description", "structural", "options",
-                        "applies"});
+                        "applies", "exposes"});
     get_string(j, "unit", ptr, d.unit, false);
     get_text(j, "description", ptr, d.description);
     if (auto it = j.find("structural"); it != j.end()) {
@@ -136,7 +154,7 @@ class GraphReader {
       else (std::string(key) == "min" ? d.min : d.max) = it->get<double>();
     }
     if (auto it = j.find("step"); it != j.end()) {
-      if (d.type != ParamType::integer || !it->is_number_integer() || it->get<long long>() < 1 ||
+      if ((stated.type && d.type != ParamType::integer) || !it->is_number_integer() || it->get<long long>() < 1 ||
           it->get<long long>() > 1000000)
         error(GraphErrorCode::wrong_json_type, ptr + "/step",
               "\"step\" must be an integer in 1..1000000, on an int parameter (valid values: min + k * step)");
@@ -152,10 +170,11 @@ class GraphReader {
         }
     }
     if (auto it = j.find("default"); it == j.end()) {
-      error(GraphErrorCode::wrong_json_type, ptr, "missing \"default\"");
+      if (!exposes) error(GraphErrorCode::wrong_json_type, ptr, "missing \"default\"");
     } else {
       JsonValue v = json_to_param_value(*it);
       if (!v.ok) error(GraphErrorCode::param_wrong_type, ptr + "/default", v.problem);
+      else if (!stated.type) d.default_value = v.value;  // typed and range-checked when resolved
       else if (Status s = check_param_value(d, v.value); !s)
         error(GraphErrorCode::param_out_of_range, ptr + "/default", s.error().message);
       else d.default_value = d.type == ParamType::real && std::holds_alternative<int>(v.value)
@@ -170,6 +189,11 @@ class GraphReader {
         return;
       }
     param_pointer_[d.name] = ptr;
+    if (exposes) {
+      exposure.parameter = d.name;
+      exposure.location = ptr + "/exposes";
+      g.exposures.push_back(std::move(exposure));
+    }
     g.parameters.push_back(std::move(d));
   }
 
@@ -187,6 +211,13 @@ class GraphReader {
         error(GraphErrorCode::bad_condition, where, "parameter '" + d.name + "': " + c.error().message);
         continue;
       }
+      // A parameter whose type comes from the pass it exposes is typed only once resolved:
+      // resolve_exposures() checks the conditions that read one.
+      const bool reads_untyped = std::any_of(c->references().begin(), c->references().end(), [&](const std::string& r) {
+        return std::any_of(g.exposures.begin(), g.exposures.end(),
+                           [&](const ParamExposure& e) { return e.parameter == r && !e.stated.type; });
+      });
+      if (reads_untyped) continue;
       if (std::optional<ConditionProblem> p = c->check(params))
         error(p->kind == ConditionProblem::Kind::unknown_parameter ? GraphErrorCode::unknown_param_reference
                                                                    : GraphErrorCode::bad_condition,

@@ -48,6 +48,9 @@ struct ParamDesc {
   // this parameter has an effect ("$kernel == \"vogel\""); empty = always. For switches inside
   // one pass, which the graph's `enabled` conditions cannot show; the sandbox greys the widget out.
   std::string applies;
+  // Pass types only: the parameter has no default, so every pass of the type must bind it (a
+  // separable filter's axis, say, where a default would hide a forgotten binding).
+  bool required = false;
 
   bool has_range() const { return min != 0.0 || max != 0.0; }
   bool has_step() const { return type == ParamType::integer && step > 1; }

@@ -73,15 +73,6 @@ std::string range_text(double min, double max) {
   return s.str();
 }
 
-// Where the graph declares parameter `name`: "/parameters/N" in a file, its name otherwise.
-std::string param_location(const CompileState& s, const std::string& name) {
-  const auto& ps = s.graph.parameters;
-  for (size_t i = 0; i < ps.size(); ++i)
-    if (ps[i].name == name)
-      return s.graph.source_file.empty() ? "parameter '" + name + "'" : "/parameters/" + std::to_string(i);
-  return "parameter '" + name + "'";
-}
-
 // Why a graph parameter bound to a pass parameter could carry a value the pass does not
 // accept (the pass type's range, options, unit), or "" when every value it allows fits.
 std::string disagreement(const ParamDesc& pass, const ParamDesc& graph) {
@@ -111,6 +102,9 @@ std::string disagreement(const ParamDesc& pass, const ParamDesc& graph) {
 
 // Where a pass is declared, for messages (built only when an error is reported).
 std::string pass_location(const PassDecl& p) { return loc(p.location, "pass '" + p.name + "'"); }
+
+// Where a pass's parameters are declared: "/passes/N/params" in a file.
+std::string params_location(const PassDecl& p) { return p.location.empty() ? pass_location(p) : p.location + "/params"; }
 
 void validate_slot_binding(CompileState& s, const PassDecl& p, const PassTypeDecl& type, const BoundSlot& bs) {
   const SlotBinding& b = *bs.binding;
@@ -198,22 +192,67 @@ void validate_slots(CompileState& s, const BoundPass& bp) {
   }
 }
 
-// A `$`-bound pass parameter (explicitly or by name) must be able to take every value its
-// graph parameter allows.
+// A `$`-bound or exposed pass parameter must be able to take every value its graph parameter
+// allows.
 void validate_reference(CompileState& s, const PassDecl& p, const ParamDesc& desc,
-                        const ParamDesc& graph_param, const std::string& where, bool implicit) {
+                        const ParamDesc& graph_param, const std::string& where) {
   const std::string who = "pass '" + p.name + "', parameter '" + desc.name + "'";
   const std::string ref = "'$" + graph_param.name + "' (" + param_location(s, graph_param.name) + ")";
   if (!value_has_type(desc.type, graph_param.default_value)) {
     s.error(GraphErrorCode::param_wrong_type, where,
             who + ": expects " + param_type_name(desc.type) + ", " + ref + " is " +
-                param_type_name(graph_param.type) +
-                (implicit ? "; it binds by name: bind the parameter explicitly" : ""));
+                param_type_name(graph_param.type));
     return;
   }
   if (std::string why = disagreement(desc, graph_param); !why.empty())
-    s.error(GraphErrorCode::param_range_mismatch, where,
-            who + (implicit ? " (bound by name)" : "") + " takes " + ref + ", but " + why);
+    s.error(GraphErrorCode::param_range_mismatch, where, who + " takes " + ref + ", but " + why);
+}
+
+// The graph parameter exposing this pass parameter, if any.
+const ParamExposure* exposure_of(const CompileState& s, const PassDecl& p, const std::string& param) {
+  for (const ParamExposure& e : s.graph.exposures)
+    if (e.pass == p.name && e.pass_param == param) return &e;
+  return nullptr;
+}
+
+// An exposed pass parameter may also be bound explicitly only to the graph parameter exposing
+// it (a template binding every pass alike, say): any other binding would give it two values.
+void validate_exposure_bindings(CompileState& s, const PassDecl& p, const ParamDesc& desc) {
+  const ParamExposure* exposure = exposure_of(s, p, desc.name);
+  if (!exposure) return;
+  for (const ParamBinding& b : p.params)
+    if (b.name == desc.name && b.reference != exposure->parameter)
+      s.error(GraphErrorCode::param_bound_twice, loc(b.location, pass_location(p)),
+              "pass '" + p.name + "', parameter '" + desc.name + "': bound here and exposed by parameter '" +
+                  exposure->parameter + "' (" + loc(exposure->location, param_location(s, exposure->parameter)) +
+                  "); keep one");
+}
+
+// A pass parameter no binding applies to: it takes its exposure's graph parameter, or the pass
+// type's default, which a required parameter lacks. One that shares a graph parameter's name
+// was most likely meant to take it: nothing binds by name, so that is an error too.
+void validate_unbound(CompileState& s, const PassDecl& p, const BoundParam& bound) {
+  const ParamDesc& desc = *bound.desc;
+  const std::string who = "pass '" + p.name + "', parameter '" + desc.name + "'";
+  if (bound.exposure) {
+    if (bound.graph_param)
+      validate_reference(s, p, desc, *bound.graph_param, loc(bound.exposure->location, pass_location(p)));
+    return;
+  }
+  const bool left_unbound = std::any_of(p.params.begin(), p.params.end(), [&](const ParamBinding& b) {
+    return b.name == desc.name && b.unbound && s.holds(b.when);
+  });
+  if (desc.required) {
+    s.error(GraphErrorCode::param_unbound, params_location(p),
+            who + ": the pass type declares no default; bind it (a constant or \"$param\")" +
+                (left_unbound ? " for these parameter values" : ""));
+  } else if (!left_unbound && !p.frame && s.params.find(desc.name)) {
+    s.error(GraphErrorCode::param_unbound, params_location(p),
+            who + " is unbound and takes the pass type's default " + param_value_to_string(desc.default_value) +
+                ", though graph parameter '" + desc.name + "' (" + param_location(s, desc.name) +
+                ") has its name; nothing binds by name: bind \"$" + desc.name + "\", expose it (\"exposes\": \"" +
+                p.name + "." + desc.name + "\") or bind a constant");
+  }
 }
 
 void validate_params(CompileState& s, const BoundPass& bp) {
@@ -240,7 +279,7 @@ void validate_params(CompileState& s, const BoundPass& bp) {
     if (b.unbound) continue;
     if (!b.reference.empty()) {
       if (const ParamDesc* graph_param = s.params.find(b.reference))
-        validate_reference(s, p, *desc, *graph_param, where(), false);
+        validate_reference(s, p, *desc, *graph_param, where());
       else
         s.error(GraphErrorCode::unknown_param_reference, where(),
                 who() + ": '$" + b.reference + "' is not a parameter of graph '" + s.graph.name + "'");
@@ -253,9 +292,10 @@ void validate_params(CompileState& s, const BoundPass& bp) {
       s.error(GraphErrorCode::param_out_of_range, where(), who() + ": " + st.error().message);
     }
   }
-  for (const BoundParam& bound : bp.params)
-    if (!bound.binding && bound.graph_param)
-      validate_reference(s, p, *bound.desc, *bound.graph_param, pass_location(p) + "/params", true);
+  for (const BoundParam& bound : bp.params) {
+    validate_exposure_bindings(s, p, *bound.desc);
+    if (!bound.binding) validate_unbound(s, p, bound);
+  }
 }
 
 void validate_repeat(CompileState& s, const PassDecl& p) {
@@ -286,6 +326,15 @@ void validate_repeat(CompileState& s, const PassDecl& p) {
 
 }  // namespace
 
+// Where the graph declares parameter `name`: "/parameters/N" in a file, its name otherwise.
+std::string param_location(const CompileState& s, const std::string& name) {
+  const auto& ps = s.graph.parameters;
+  for (size_t i = 0; i < ps.size(); ++i)
+    if (ps[i].name == name)
+      return s.graph.source_file.empty() ? "parameter '" + name + "'" : "/parameters/" + std::to_string(i);
+  return "parameter '" + name + "'";
+}
+
 void validate_declarations(CompileState& s) {
   std::unordered_map<std::string_view, int> pass_names;
   pass_names.reserve(s.bound.size());
@@ -311,6 +360,7 @@ void validate_declarations(CompileState& s) {
     if (s.find_resource(s.graph.outputs[i]) < 0)
       s.error(GraphErrorCode::unknown_output, "/outputs/" + std::to_string(i),
               "output '" + s.graph.outputs[i] + "' is not a declared resource");
+  validate_parameter_graph(s);
 }
 
 }  // namespace penumbra::graph::detail

@@ -50,6 +50,7 @@ Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique) 
       .write("position", position)
       .write("albedo", albedo);
   GraphDesc frame = b.build();
+  for (PassDecl& p : frame.passes) p.frame = true;
 
   // Technique resources: identical re-declarations of frame resources are dropped.
   for (const ResourceDecl& r : technique.resources) {
@@ -75,6 +76,7 @@ Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique) 
     return e;
   }
   frame.parameters = technique.parameters;
+  frame.exposures = technique.exposures;
   frame.description = technique.description;
   frame.source_file = technique.source_file;
   frame.passes.insert(frame.passes.end(), technique.passes.begin(), technique.passes.end());
@@ -82,6 +84,7 @@ Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique) 
   PassDecl lighting;
   lighting.type = "lighting";
   lighting.name = "lighting";
+  lighting.frame = true;
   lighting.slots = {{"albedo", "gbuffer_albedo", -1, ""},
                     {"normal", "gbuffer_normal", -1, ""},
                     {"position", "gbuffer_position", -1, ""},

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gl/shader_files.h"
+#include "graph/exposures.h"
 #include "graph/graph_json.h"
 
 namespace penumbra::plugin {
@@ -40,7 +41,22 @@ void TechniqueRegistry::register_passes(exec::PassLibrary& library) const {
     if (t.register_passes) t.register_passes(library);
 }
 
-Result<graph::GraphDesc> load_technique_graph(const Technique& technique) {
+namespace {
+
+// Bad input (exit 2): the file may be a user's (PENUMBRA_SHADER_DIR, a plugin's folder); the
+// built-ins' graphs are compiled by the tests, so one of ours cannot get here unseen.
+Error graph_file_error(const graph::GraphErrors& errors) {
+  Error e = errors.front();
+  std::string all;
+  for (const auto& err : errors) all += err.to_string() + "\n";
+  e.details = all;
+  e.kind = ErrorKind::bad_input;
+  return e;
+}
+
+}  // namespace
+
+Result<graph::GraphDesc> load_technique_graph(const Technique& technique, const graph::PassTypeRegistry& pass_types) {
   const gl::ShaderFileSystem& files = gl::ShaderFileSystem::default_instance();
   auto text = files.read(technique.graph_file);
   if (!text) return text.error();
@@ -48,16 +64,9 @@ Result<graph::GraphDesc> load_technique_graph(const Technique& technique) {
   // repository path.
   auto on_disk = files.disk_path(technique.graph_file);
   auto graph = graph::parse_graph_json(*text, on_disk ? on_disk->string() : technique.graph_file);
-  if (!graph) {
-    Error e = graph.errors().front();
-    std::string all;
-    for (const auto& err : graph.errors()) all += err.to_string() + "\n";
-    e.details = all;
-    // Bad input (exit 2): the file may be a user's (PENUMBRA_SHADER_DIR, a plugin's folder);
-    // the built-ins' graphs are compiled by the tests, so one of ours cannot get here unseen.
-    e.kind = ErrorKind::bad_input;
-    return e;
-  }
+  if (!graph) return graph_file_error(graph.errors());
+  if (graph::GraphErrors errors = graph::resolve_exposures(*graph, pass_types); !errors.empty())
+    return graph_file_error(errors);
   return std::move(*graph);
 }
 

@@ -46,8 +46,9 @@ class TechniqueRegistry {
   std::vector<Technique> techniques_;
 };
 
-// The technique's graph as declared in its JSON file.
-Result<graph::GraphDesc> load_technique_graph(const Technique& technique);
+// The technique's graph as declared in its JSON file, with its exposed parameters described by
+// the pass types in `pass_types` (graph/exposures.h): what a ParameterSet is made from.
+Result<graph::GraphDesc> load_technique_graph(const Technique& technique, const graph::PassTypeRegistry& pass_types);
 
 // Shared-library plugins add techniques to a registry: plugin/plugin_library.h.
 

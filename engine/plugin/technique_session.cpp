@@ -38,7 +38,7 @@ Status TechniqueSession::set_technique(const std::string& name) {
     for (const std::string& n : registry_.names()) valid += (valid.empty() ? "" : ", ") + n;
     return make_error("unknown technique '" + name + "' (available: " + valid + ")");
   }
-  auto declared = load_technique_graph(*t);
+  auto declared = load_technique_graph(*t, library_.declarations());
   if (!declared) return declared.error();
   auto composed = compose_frame_graph(*declared);
   if (!composed) return composed.error();

@@ -49,7 +49,7 @@ penumbra::exec::PassType moments_pass_type() {
       .sampled("shadow_map", {Format::DEPTH32F})
       .image_out("moments", {Format::RG32F})
       .same_size({"shadow_map", "moments"})
-      .integer("blur_radius", 2, 0, 8, "texels", "box filter radius: (2r+1)^2 taps")
+      .integer("blur_radius", 2, 0, 8, "texels", "box filter radius over the moments: (2r+1)^2 taps")
       .build<MomentsPass>();
 }
 

@@ -49,10 +49,10 @@ exec::PassType pcf_mask_pass_type() {
       .image_out("mask", {Format::R16F})
       .same_size({"position", "normal", "mask"})
       .enumeration("kernel", "box", {"box", "vogel"},
-                   "box: N x N taps one texel apart; vogel: rotated Vogel disk")
-      .integer("box_size", 5, 1, 15, "texels", "Box kernel width N (odd)").step(2)
-      .integer("samples", 16, 1, 64, "", "Vogel-disk taps")
-      .real("radius", 2.5, 0.0, 64.0, "texels", "Vogel-disk radius")
+                   "box: N x N taps one texel apart; vogel: Vogel disk rotated per pixel by interleaved gradient noise")
+      .integer("box_size", 5, 1, 15, "texels", "Box kernel width N (odd; kernel = box)").step(2)
+      .integer("samples", 16, 1, 64, "", "Vogel-disk taps (kernel = vogel)")
+      .real("radius", 2.5, 0.0, 64.0, "texels", "Vogel-disk radius (kernel = vogel)")
       .real("depth_bias", 0.0002, 0.0, 0.05, "window depth",
             "Constant bias subtracted from the receiver-plane depth of every tap")
       .build<PcfMaskPass>();

@@ -13,8 +13,8 @@ namespace {
 using graph::Format;
 using graph::ParamDesc;
 
-graph::ParamDesc samples_param(const char* what) {
-  return graph::int_param("samples", 16, 4, 64, "", std::string("Vogel-disk taps of the ") + what);
+graph::ParamDesc samples_param(const char* description) {
+  return graph::int_param("samples", 16, 4, 64, "", description);
 }
 
 graph::ParamDesc light_size_scale_param() {
@@ -91,7 +91,7 @@ exec::PassType pcss_blocker_search_pass_type() {
                        "PCSS blocker search: mean blocker distance (world units, 0 = none) (compute)")
       .image_out("blocker", {Format::R32F})
       .same_size({"position", "normal", "blocker"})
-      .param(samples_param("blocker search"))
+      .param(samples_param("Blocker-search taps (each a textureGather of 4 texels), Vogel disk rotated per pixel"))
       .param(light_size_scale_param())
       .param(depth_bias_param())
       .param(max_uv_param("max_search_uv", "blocker search region"))
@@ -104,7 +104,7 @@ exec::PassType pcss_filter_pass_type() {
       .sampled("blocker", {Format::R32F})
       .image_out("mask", {Format::R16F})
       .same_size({"position", "normal", "blocker", "mask"})
-      .param(samples_param("filter"))
+      .param(samples_param("PCF taps (bilinear hardware comparisons), Vogel disk rotated per pixel"))
       .param(light_size_scale_param())
       .param(depth_bias_param())
       .param(max_uv_param("max_filter_uv", "filter kernel"))

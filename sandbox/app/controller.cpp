@@ -15,6 +15,7 @@
 #include "scene/load_scene.h"
 #include "gl/debug_output.h"
 #include "util/png.h"
+#include "passes/shared_passes.h"
 
 namespace penumbra::sandbox {
 
@@ -172,7 +173,7 @@ const std::string& SandboxController::technique_description(const std::string& n
   if (it != descriptions_.end()) return it->second;
   std::string text;
   if (const plugin::Technique* t = registry_.find(name))
-    if (auto g = plugin::load_technique_graph(*t)) text = g->description;
+    if (auto g = plugin::load_technique_graph(*t, library_.declarations())) text = g->description;
   return descriptions_.emplace(name, std::move(text)).first->second;
 }
 

@@ -58,7 +58,7 @@ Result<Build> open_build(const fs::path& file, const fs::path& copies, int& copy
   Build build{std::move(*library), {}};
   build.library.register_into(build.techniques);
   for (const plugin::Technique& t : build.techniques.all())
-    if (auto graph = plugin::load_technique_graph(t); !graph) return graph.error();
+    if (auto graph = load_technique_graph(build.techniques, t); !graph) return graph.error();
   return build;
 }
 

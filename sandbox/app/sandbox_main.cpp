@@ -14,6 +14,7 @@
 #include "util/file_read.h"
 #include "gl/context.h"
 #include "techniques/builtin_techniques.h"
+#include "passes/shared_passes.h"
 
 namespace penumbra::sandbox {
 
@@ -29,7 +30,7 @@ int fail(const Error& e) {
 int write_exhaustive(const plugin::TechniqueRegistry& registry, const SandboxOptions& o) {
   std::vector<TechniqueInfo> infos;
   for (const plugin::Technique& t : registry.all()) {
-    auto g = plugin::load_technique_graph(t);
+    auto g = load_technique_graph(registry, t);
     if (!g) return fail(g.error());
     infos.push_back({t.name, g->parameters});
   }

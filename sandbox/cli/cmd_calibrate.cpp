@@ -19,6 +19,7 @@
 #include "plugin/preset.h"
 #include "techniques/builtin_techniques.h"
 #include "util/file_write.h"
+#include "passes/shared_passes.h"
 
 namespace penumbra::cli {
 namespace {
@@ -95,7 +96,7 @@ Result<CalibrateOptions> parse_options(const ParsedArgs& args, const plugin::Tec
     }
   // The free parameters are checked now, before any reference is rendered.
   const plugin::Technique* technique = registry.find(o.technique.name);
-  auto graph = plugin::load_technique_graph(*technique);
+  auto graph = load_technique_graph(registry, *technique);
   if (!graph) return graph.error();
   if (auto space = free_params(graph::ParameterSet(graph->parameters), o.params); !space) return space.error();
   o.out = args.get("out").value_or("");

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "graph/compiler.h"
+#include "graph/exposures.h"
 #include "graph/graph_json.h"
 #include "cli/command.h"
 #include "pass_registry.h"
@@ -147,6 +148,10 @@ int run(const std::vector<std::string>& args) {
   graph::Checked<graph::GraphDesc> desc = graph::load_graph_json(file);
   if (!desc) {
     for (const auto& e : desc.errors()) std::cerr << e.to_string() << "\n";
+    return 2;
+  }
+  if (graph::GraphErrors errors = graph::resolve_exposures(*desc, library->declarations()); !errors.empty()) {
+    for (const auto& e : errors) std::cerr << e.to_string() << "\n";
     return 2;
   }
   const bool compose = frame || (!no_frame && plugin::reads_frame_resources(*desc));

@@ -12,6 +12,7 @@
 #include "cli/plugin_option.h"
 #include "plugin/technique.h"
 #include "techniques/builtin_techniques.h"
+#include "passes/shared_passes.h"
 
 namespace penumbra::cli {
 namespace {
@@ -145,7 +146,7 @@ int cmd_techniques(const std::vector<std::string>& argv) {
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
   for (const plugin::Technique* technique : selected) {
     const plugin::Technique& t = *technique;
-    Result<graph::GraphDesc> g = plugin::load_technique_graph(t);
+    Result<graph::GraphDesc> g = load_technique_graph(registry, t);
     if (!g) {
       std::fprintf(stderr, "penumbra techniques: technique '%s': %s\n%s", t.name.c_str(),
                    g.error().to_string().c_str(), g.error().details.c_str());

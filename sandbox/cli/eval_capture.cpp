@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gl/timer_query.h"
+#include "passes/shared_passes.h"
 
 namespace penumbra::cli {
 
@@ -84,7 +85,7 @@ Status check_set_keys(const plugin::TechniqueRegistry& registry, const std::vect
   for (const std::string& t : techniques) {
     const plugin::Technique* technique = registry.find(t);
     if (!technique) continue;
-    auto g = plugin::load_technique_graph(*technique);
+    auto g = load_technique_graph(registry, *technique);
     if (!g) return g.error();
     sets.emplace_back(g->parameters);
   }

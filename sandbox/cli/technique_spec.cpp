@@ -2,6 +2,7 @@
 
 #include "cli/eval_capture.h"
 #include "plugin/preset.h"
+#include "passes/shared_passes.h"
 
 namespace penumbra::cli {
 
@@ -35,7 +36,7 @@ Result<std::vector<TechniqueSpec>> parse_technique_specs(const std::string& opti
       for (const std::string& n : registry.names()) valid += (valid.empty() ? "" : ", ") + n;
       return make_error("--" + option + ": unknown technique '" + shortened(spec.name) + "' (available: " + valid + ")");
     }
-    auto graph = plugin::load_technique_graph(*technique);
+    auto graph = load_technique_graph(registry, *technique);
     if (!graph) return graph.error();
     graph::ParameterSet params(graph->parameters);
     if (at != std::string::npos) {

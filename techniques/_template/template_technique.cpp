@@ -37,7 +37,7 @@ exec::PassType template_mask_pass_type() {
       .sampled("shadow_map", {Format::DEPTH32F})
       .image_out("mask", {Format::R16F})
       .same_size({"position", "mask"})
-      .real("strength", 1.0, 0.0, 1.0, "", "0 = no shadow, 1 = full hard shadow")
+      .real("strength", 1.0, 0.0, 1.0, "", "0 = no shadow, 1 = full hard shadow (mask = 1 - strength * occluded)")
       .build<TemplateMaskPass>();
 }
 

@@ -144,10 +144,10 @@ exec::PassType raster_reference_pass_type() {
       .same_size({"position", "normal", "accumulation", "mask"})
       .param(int_param("samples", 1024, 1, 65536, "", "Light sample points N (one shadow map each)"))
       .param(int_param("map_size", 4096, 64, 16384, "texels", "Resolution of each sample point's depth map"))
-      .param(int_param("maps_per_frame", 16, 1, 65536, "", "Shadow maps accumulated per frame (progressive)"))
+      .param(int_param("maps_per_frame", 16, 1, 65536, "", "Shadow maps accumulated per frame (progressive: keeps the sandbox interactive)"))
       .param(int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the ray tracer's)"))
       .param(real_param("receiver_bias", 1.0, 0.0, 16.0, "texels",
-                        "Receiver moved towards the sample point by this many texel footprints x tan(incidence)"))
+                        "Receiver moved towards the sample point by this many texel footprints x tan(incidence) (acne)"))
       .param(real_param("slope_bias", 0.0, 0.0, 10.0, "", "glPolygonOffset factor of the sample maps"))
       .param(real_param("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "glPolygonOffset units of the sample maps"))
       .build<RasterReferencePass>();

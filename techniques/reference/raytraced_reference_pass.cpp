@@ -142,7 +142,8 @@ exec::PassType raytraced_reference_pass_type() {
       .same_size({"position", "normal", "mask"})
       .param(int_param("rays", 256, 1, 65536, "", "Shadow rays per pixel M (stratified light points)"))
       .param(int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the raster reference's)"))
-      .param(int_param("pixel_samples", 1, 1, 16, "", "K x K sub-pixel samples per pixel on the receiver's tangent plane"))
+      .param(int_param("pixel_samples", 1, 1, 16, "", "K x K sub-pixel samples per pixel on the receiver's tangent plane (box filter; 4 with a "
+                       "size-0 light = anti-aliased exact hard shadow)"))
       .build<RaytracedReferencePass>();
 }
 

@@ -35,7 +35,7 @@ TEST(TechniquesCommand, JsonListsEveryParameterOfEveryTechnique) {
     SCOPED_TRACE(t.name);
     auto it = std::find_if(list.begin(), list.end(), [&](const auto& j) { return j.value("name", "") == t.name; });
     ASSERT_NE(it, list.end());
-    Result<graph::GraphDesc> g = plugin::load_technique_graph(t);
+    Result<graph::GraphDesc> g = load_technique_graph(registry, t);
     ASSERT_TRUE(g);
     EXPECT_FALSE(g->description.empty());
     EXPECT_EQ((*it)["description"], g->description);

@@ -26,7 +26,7 @@ GraphBuilder pcss_like(int blur_passes = 2) {
   b.pass("shadow_map", "light_depth").read("scene", scene).read("light", light).write("depth", sm);
   b.pass("depth_prepass", "camera_depth").read("scene", scene).read("camera", camera).write("depth", depth);
   b.pass("penumbra_filter", "filter").read("shadow_map", sm).read("depth", depth).write("mask", mask);
-  b.pass("blur", "debug_view").read("input", mask).write("output", debug);
+  b.pass("blur", "debug_view").read("input", mask).write("output", debug).param("radius", "$radius");
   b.pass("blur", "blur").read("input", mask).write("output", mask)
       .param("radius", "$radius").repeat("$blur_passes").enabled("$use_blur");
   b.output(mask);

@@ -87,13 +87,13 @@ TEST(GraphJson, RandomBytesFuzz) {
 }
 
 TEST(GraphJson, ExampleRoundTripThroughBuilderModel) {
-  auto g = parse_graph_json(R"({"name": "one", "parameters": [{"name": "r", "type": "int", "default": 2, "min": 1, "max": 16}],
+  auto g = parse_graph_json(R"({"name": "one", "parameters": [{"name": "r", "type": "int", "default": 2, "min": 1, "max": 8, "structural": true}],
     "resources": {"scene": {"kind": "imported"}, "camera": {"kind": "imported"},
-                  "d": {"kind": "texture", "format": "DEPTH32F", "size": "screen/2"}},
+                  "d": {"kind": "texture", "format": "DEPTH32F", "size": "screen/$r"}},
     "passes": [{"type": "depth_prepass", "name": "z", "slots": {"scene": "scene", "camera": "camera", "depth": "d"}}],
     "outputs": ["d"]})", "one.json");
   ASSERT_TRUE(g) << all_messages(g.errors());
-  EXPECT_EQ(g->resources[2].size.to_string(), "screen/2");
+  EXPECT_EQ(g->resources[2].size.to_string(), "screen/$r");
   EXPECT_EQ(g->passes[0].location, "/passes/0");
   auto plan = compile_graph(*g);
   ASSERT_TRUE(plan);

@@ -83,7 +83,7 @@ GraphErrors compile_with(const std::string& param) {
   auto g = parse_graph_json(R"({"name": "t", "parameters": [)" + param + R"(],
     "resources": {"a": {"kind": "persistent", "format": "R16F", "size": "screen"},
                   "b": {"kind": "texture", "format": "R16F", "size": "screen"}},
-    "passes": [{"type": "odd_box", "name": "box", "slots": {"input": "a", "output": "b"}}],
+    "passes": [{"type": "odd_box", "name": "box", "slots": {"input": "a", "output": "b"}, "params": {"box_size": "$box_size"}}],
     "outputs": ["b"]})", "t.json");
   if (!g) return g.errors();
   ParameterSet params(g->parameters);

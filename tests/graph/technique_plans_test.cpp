@@ -9,11 +9,13 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <utility>
 #include <vector>
 
 #include "graph/compiler.h"
+#include "graph/exposures.h"
 #include "graph/graph_json.h"
 #include "plugin/frame_graph.h"
 #include "plugin/preset.h"
@@ -65,7 +67,7 @@ TEST_P(TechniquePlan, DefaultPlanMatchesGoldenDump) {
   const std::string name = GetParam();
   const plugin::Technique* technique = techniques().registry.find(name);
   ASSERT_NE(technique, nullptr) << name;
-  auto declared = plugin::load_technique_graph(*technique);
+  auto declared = plugin::load_technique_graph(*technique, techniques().library.declarations());
   ASSERT_TRUE(declared) << declared.error().to_string() << "\n" << declared.error().details;
   auto frame = plugin::compose_frame_graph(*declared);
   ASSERT_TRUE(frame) << frame.error().to_string();
@@ -80,7 +82,7 @@ TEST_P(TechniquePlan, DefaultPlanMatchesGoldenDump) {
 TEST_P(TechniquePlan, EveryStructuralCombinationCompiles) {
   const plugin::Technique* technique = techniques().registry.find(GetParam());
   ASSERT_NE(technique, nullptr);
-  auto frame = plugin::compose_frame_graph(*plugin::load_technique_graph(*technique));
+  auto frame = plugin::compose_frame_graph(*plugin::load_technique_graph(*technique, techniques().library.declarations()));
   ASSERT_TRUE(frame);
   std::vector<std::pair<std::string, std::vector<graph::ParamValue>>> axes;
   for (const graph::ParamDesc& d : frame->parameters) {
@@ -123,6 +125,8 @@ TEST_P(DocumentedExample, PlanMatchesGoldenDump) {
   auto declared = graph::load_graph_json(path);
   ASSERT_TRUE(declared) << plugin::errors_to_error(declared.errors()).details;
   graph::GraphDesc desc = *declared;
+  graph::GraphErrors unresolved = graph::resolve_exposures(desc, techniques().library.declarations());
+  ASSERT_TRUE(unresolved.empty()) << plugin::errors_to_error(unresolved).details;
   if (plugin::reads_frame_resources(desc)) {
     auto frame = plugin::compose_frame_graph(desc);
     ASSERT_TRUE(frame) << frame.error().to_string();
@@ -137,6 +141,78 @@ TEST_P(DocumentedExample, PlanMatchesGoldenDump) {
 INSTANTIATE_TEST_SUITE_P(Docs, DocumentedExample,
                          ::testing::Values("pcss_blur", "penumbra_variants", "progressive_reference"));
 
+// No parameter is described twice: a technique parameter that binds a pass parameter with "$"
+// must not repeat its description, or its default and range (then it should expose it); and
+// no description a technique states is stated by another technique or by a pass type.
+TEST(OneDescription, NoTechniqueRepeatsADescriptionADefaultOrARange) {
+  const graph::PassTypeRegistry& types = techniques().library.declarations();
+  std::map<std::string, std::string> pass_descriptions;  // description -> "type.param"
+  for (const std::string& type : types.names())
+    for (const graph::ParamDesc& d : types.find(type)->params) pass_descriptions.emplace(d.description, type + "." + d.name);
+  std::map<std::string, std::string> stated;  // description -> "technique.param"
+  int checked = 0;
+  for (const plugin::Technique& t : techniques().registry.all()) {
+    // As written in the file: an exposing parameter's description is there only if it states one.
+    auto raw = graph::load_graph_json(std::string(PENUMBRA_SOURCE_DIR) + "/" + t.graph_file);
+    ASSERT_TRUE(raw) << t.graph_file;
+    for (const graph::ParamDesc& d : raw->parameters) {
+      if (d.description.empty()) continue;
+      const std::string who = t.name + "." + d.name;
+      auto [it, fresh] = stated.emplace(d.description, who);
+      EXPECT_TRUE(fresh) << who << " states the description of " << it->second << ": \"" << d.description << "\"";
+      if (auto p = pass_descriptions.find(d.description); p != pass_descriptions.end())
+        ADD_FAILURE() << who << " states the description of pass parameter " << p->second << "; expose it instead";
+      ++checked;
+    }
+    auto resolved = plugin::load_technique_graph(t, types);
+    ASSERT_TRUE(resolved) << resolved.error().details;
+    for (const graph::PassDecl& p : resolved->passes) {
+      const graph::PassTypeDecl* type = types.find(p.type);
+      ASSERT_NE(type, nullptr) << p.type;
+      for (const graph::ParamBinding& b : p.params) {
+        const graph::ParamDesc* pass_param = type->find_param(b.name);
+        auto technique_param = std::find_if(resolved->parameters.begin(), resolved->parameters.end(),
+                                            [&](const graph::ParamDesc& d) { return d.name == b.reference; });
+        if (b.reference.empty() || !pass_param || technique_param == resolved->parameters.end()) continue;
+        const bool exposes = std::any_of(resolved->exposures.begin(), resolved->exposures.end(),
+                                         [&](const graph::ParamExposure& e) { return e.parameter == b.reference; });
+        if (exposes) continue;  // inherited, never restated (resolve_exposures refuses that)
+        const bool same_default_and_range = technique_param->default_value == pass_param->default_value &&
+                                            technique_param->min == pass_param->min &&
+                                            technique_param->max == pass_param->max;
+        EXPECT_FALSE(same_default_and_range) << t.name << "." << b.reference << " repeats the default and range of "
+                                             << p.type << "." << b.name << ": expose it";
+      }
+    }
+  }
+  EXPECT_GE(checked, 10);
+}
+
+// A technique parameter may not take the name of a frame pass's parameter: the frame's
+// lighting pass would look as if the technique set it.
+TEST(FrameParameters, ATechniqueParameterNamedLikeTheLightingPassesIsRefused) {
+  const plugin::Technique* hard = techniques().registry.find("hard");
+  ASSERT_NE(hard, nullptr);
+  auto declared = plugin::load_technique_graph(*hard, techniques().library.declarations());
+  ASSERT_TRUE(declared);
+  graph::GraphDesc desc = *declared;
+  desc.source_file = "hard.json";
+  graph::ParamDesc ambient = desc.parameters.front();
+  ambient.name = "ambient";
+  desc.parameters.push_back(ambient);
+  auto frame = plugin::compose_frame_graph(desc);
+  ASSERT_TRUE(frame) << frame.error().to_string();
+  graph::ParameterSet params(frame->parameters);
+  auto plan = graph::compile(*frame, techniques().library.declarations(), params, {256, 128, 512});
+  ASSERT_FALSE(plan);
+  bool named = false;
+  for (const graph::GraphError& e : plan.errors())
+    if (e.code == graph::GraphErrorCode::param_shadows_frame)
+      named = e.to_string().find("lighting") != std::string::npos && e.to_string().find("ambient") != std::string::npos &&
+              e.to_string().find("hard.json") != std::string::npos;
+  EXPECT_TRUE(named) << plugin::errors_to_error(plan.errors()).details;
+}
+
 // Every paper technique ships its paper's constants as the `paper` preset, and each shipped
 // preset fits its technique's parameters and compiles.
 TEST(ShippedPresets, PaperPresetsApplyToTheirTechniquesAndCompile) {
@@ -146,7 +222,7 @@ TEST(ShippedPresets, PaperPresetsApplyToTheirTechniquesAndCompile) {
     ASSERT_NE(technique, nullptr) << name;
     std::vector<std::string> shipped = plugin::shipped_presets(*technique);
     EXPECT_NE(std::find(shipped.begin(), shipped.end(), "paper"), shipped.end()) << name;
-    auto desc = plugin::load_technique_graph(*technique);
+    auto desc = plugin::load_technique_graph(*technique, techniques().library.declarations());
     ASSERT_TRUE(desc) << desc.error().to_string();
     for (const std::string& preset_name : shipped) {
       auto preset = plugin::load_preset(*technique, preset_name);

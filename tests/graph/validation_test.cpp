@@ -10,13 +10,15 @@ namespace {
 
 using namespace testing;
 
+// Parameters the tests read; a graph declares only those it uses (one nothing reads is an error).
+const char* kRadius = R"({"name": "radius", "type": "int", "default": 2, "min": 1, "max": 16})";
+const char* kFlag = R"({"name": "flag", "type": "bool", "default": true, "structural": true})";
+const char* kN = R"({"name": "n", "type": "int", "default": 100, "min": 1, "max": 1000, "structural": true})";
+
 // A valid graph; each test swaps one piece of `passes` for a broken one.
-std::string graph_with(const std::string& passes, const std::string& extra_params = "") {
+std::string graph_with(const std::string& passes, const std::string& params = "") {
   return R"({"name": "t",
-  "parameters": [
-    {"name": "radius", "type": "int", "default": 2, "min": 1, "max": 16},
-    {"name": "flag", "type": "bool", "default": true, "structural": true},
-    {"name": "n", "type": "int", "default": 100, "min": 1, "max": 1000, "structural": true})" + extra_params + R"(],
+  "parameters": [)" + params + R"(],
   "resources": {
     "scene": {"kind": "imported"}, "camera": {"kind": "imported"}, "light": {"kind": "imported"},
     "depth": {"kind": "texture", "format": "DEPTH32F", "size": "screen"},
@@ -139,7 +141,7 @@ TEST(GraphValidation, UnknownParameterReference) {
 
 TEST(GraphValidation, RepeatOutOfRange) {
   auto e = only(errors_of(graph_with(kFilter + R"(,
-    {"type": "blur_in_place", "name": "smooth", "repeat": "$n", "slots": {"image": "mask"}})")),
+    {"type": "blur_in_place", "name": "smooth", "repeat": "$n", "slots": {"image": "mask"}})", kN)),
                 GraphErrorCode::repeat_out_of_range);
   expect_mentions(e, {"/passes/2/repeat", "smooth", "$n", "[1, 1000]", "[1, 64]"});
   auto constant = only(errors_of(graph_with(kFilter + R"(,
@@ -164,11 +166,11 @@ TEST(GraphValidation, VersionsPastTheLimitAreErrorsNamingPassAndResource) {
 
 TEST(GraphValidation, BadCondition) {
   auto e = only(errors_of(graph_with(kFilter + R"(,
-    {"type": "blur_in_place", "name": "smooth", "enabled": "$flag &&", "slots": {"image": "mask"}})")),
+    {"type": "blur_in_place", "name": "smooth", "enabled": "$flag &&", "slots": {"image": "mask"}})", kFlag)),
                 GraphErrorCode::bad_condition);
   expect_mentions(e, {"/passes/2/enabled", "smooth"});
   auto typed = only(errors_of(graph_with(kFilter + R"(,
-    {"type": "blur_in_place", "name": "smooth", "enabled": "$radius", "slots": {"image": "mask"}})")),
+    {"type": "blur_in_place", "name": "smooth", "enabled": "$radius", "slots": {"image": "mask"}})", kRadius)),
                     GraphErrorCode::bad_condition);
   expect_mentions(typed, {"radius", "not bool"});
 }

@@ -52,7 +52,7 @@ TEST(PluginLibrary, LoadingADirectoryRegistersItsPassTypesAndReadsItsFilesFromTh
   const auto on_disk = gl::ShaderFileSystem::default_instance().disk_path(t->graph_file);
   ASSERT_TRUE(on_disk);
   EXPECT_EQ(fs::canonical(*on_disk), fs::canonical(plugin_dir("reload_build1") + "/reload_probe/build1.json"));
-  Result<graph::GraphDesc> g = plugin::load_technique_graph(*t);
+  Result<graph::GraphDesc> g = load_technique_graph(registry, *t);
   ASSERT_TRUE(g) << g.error().to_string();
   EXPECT_EQ(g->parameters.size(), 2u);
 }

@@ -2,6 +2,7 @@
 // checkerboard ~ full resolution on planar receivers, penumbra mask ~ regular CHSS.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -98,6 +99,27 @@ TEST(PmchssVariants, CheckerboardMatchesFullResolutionOnPlanes) {
     ASSERT_GT(n, 1000u);
     EXPECT_LT(rmse, 0.05) << variant;
   }
+}
+
+// checker_depth_epsilon reaches the upsample pass (its eps, Sterna 2018 section 3): at 1e-6 a
+// filled pixel averages only neighbours on its own surface, at 10 all four alike, so pixels
+// next to depth edges (the ball's outline over the ground) differ. Before the technique exposed
+// the pass's parameter, nothing bound it and both renders were byte-identical.
+TEST(PmchssVariants, CheckerDepthEpsilonChangesTheFilledPixels) {
+  auto rig = ball_rig();
+  metrics::MaskImage sharp = render(*rig, {"checkerboard=true", "checker_depth_epsilon=0.000001"});
+  metrics::MaskImage blind = render(*rig, {"checkerboard=true", "checker_depth_epsilon=10"});
+  ASSERT_EQ(sharp.pixels.size(), blind.pixels.size());
+  size_t changed = 0;
+  float largest = 0.0f;
+  for (size_t i = 0; i < sharp.pixels.size(); ++i) {
+    const float d = std::abs(sharp.pixels[i] - blind.pixels[i]);
+    if (d > 0.01f) ++changed;
+    largest = std::max(largest, d);
+  }
+  std::printf("[ measure  ] checker eps 1e-6 vs 10: %zu pixels differ by > 0.01, largest %.3f\n", changed, largest);
+  EXPECT_GT(changed, 10u);
+  EXPECT_GT(largest, 0.05f);
 }
 
 // Section 2.2: the penumbra mask approximates regular CHSS (same search, at screen/4, blurred).

@@ -32,7 +32,7 @@ TEST(SandboxSoak, TwoThousandRandomStepsKeepTheSandboxHealthy) {
     // random frames of it take many minutes on llvmpipe. It has its own tests; the Xvfb test
     // visits its parameters' min/max/default once.
     if (t.name == "reference") continue;
-    auto g = plugin::load_technique_graph(t);
+    auto g = plugin::load_technique_graph(t, library.declarations());
     ASSERT_TRUE(g) << g.error().to_string();
     infos.push_back({t.name, g->parameters});
   }

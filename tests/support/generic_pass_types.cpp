@@ -62,6 +62,13 @@ void register_generic_pass_types(PassTypeRegistry& registry) {
                             .min = 0.1, .max = 16.0, .unit = "texels", .description = "Gaussian sigma"}},
                 .same_size_groups = {{"input", "output"}},
                 .description = "Separable Gaussian blur (ping-pong)"});
+  registry.add({.name = "directional_blur",
+                .slots = {{"input", Access::read, SlotKind::texture, mask_formats, Usage::sampled},
+                          {"output", Access::write, SlotKind::texture, mask_formats, Usage::image_store}},
+                .params = {{.name = "axis", .type = ParamType::enumeration, .default_value = std::string("x"),
+                            .description = "Blur direction", .options = {"x", "y"}, .required = true}},
+                .same_size_groups = {{"input", "output"}},
+                .description = "One axis of a separable blur: each pass must say which"});
   registry.add({.name = "blur_in_place",
                 .slots = {{"image", Access::read_write, SlotKind::texture, mask_formats, Usage::image_load}},
                 .params = {{.name = "radius", .type = ParamType::integer, .default_value = 2,

@@ -84,10 +84,11 @@ exec::PassType depth_pass_type() {
       .depth_out("depth")
       .color_out("esm", {Format::RGBA32F})
       .same_size({"depth", "esm"})
-      .real("slope_bias", 1.5, 0.0, 10.0, "", "glPolygonOffset factor")
-      .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "glPolygonOffset units")
+      .real("slope_bias", 1.5, 0.0, 10.0, "", "Depth pass slope-scaled bias (glPolygonOffset factor)")
+      .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "Depth pass constant bias (glPolygonOffset units)")
       .enumeration("overlap_resolve", "max_blend", {"max_blend", "two_pass"},
-                   "Defaults for one MAX-blended quad pass, or the paper's for its two-pass fallback")
+                   "Overlapping quads: one MAX-blended pass, or the paper's fallback (an overwriting pass, then a MAX "
+                   "pass); the depth pass clears the map for the one chosen")
       .build<DepthPass>();
 }
 

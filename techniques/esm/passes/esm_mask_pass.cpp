@@ -64,9 +64,10 @@ exec::PassType mask_pass_type() {
       .image_out("mask", {Format::R16F})
       .same_size({"position", "normal", "mask"})
       .same_size({"shadow_map", "esm"})
-      .real("depth_bias", 0.0005, 0.0, 0.05, "window depth", "Subtracted from the receiver depth before each comparison")
-      .real("aa_width", 1.0, 0.0, 8.0, "pixels", "Width of the edge's ramp on screen (0 = binary)")
-      .real("boundary_shift", 0.0, 0.0, 2.0, "texels", "Shadow boundary moved outwards from the edge (paper: 0.707)")
+      .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
+            "Subtracted from the receiver depth before the depth and edge-depth comparisons")
+      .real("aa_width", 1.0, 0.0, 8.0, "pixels", "Width of the shadow edge's ramp on screen: 1 = the pixel's coverage; 0 = binary")
+      .real("boundary_shift", 0.0, 0.0, 2.0, "texels", "Shadow boundary moved outwards from the silhouette edge (the paper: 0.707)")
       .build<MaskPass>();
 }
 

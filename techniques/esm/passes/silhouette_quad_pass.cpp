@@ -84,8 +84,10 @@ exec::PassType silhouette_quad_pass_type() {
       .same_size({"depth", "esm"})
       .enumeration("blend", "max", {"max", "overwrite"},
                    "max: MAX blending (one pass); overwrite: the two-pass fallback's first pass")
+      .required()
       .real("hidden_edge_tolerance", 2.0, 0.0, 1000.0, "texels",
-            "An edge is hidden where a surface is nearer the light than it (or than its lit facet's plane, inside) by more than this");
+            "Hidden edges: an edge writes no texel whose surface is nearer the light than the edge (outside its "
+            "occluder) or than its lit facet's plane (inside) by more than this many texel footprints");
   graph::PassTypeDecl decl = b.decl();
   decl.slots.push_back(blended_attachment("esm", Format::RGBA32F));
   return {decl, [] { return std::make_unique<SilhouetteQuadPass>(); }};

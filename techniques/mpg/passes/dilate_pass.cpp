@@ -32,7 +32,10 @@ exec::PassType dilate_pass_type() {
   exec::PassDeclBuilder b = distance_map_filter(
       "mpg_dilate", "mpg pass 3: Gaussian dilation of D into lit pixels, one axis (Cherry & Kooima 3.1)");
   b.enumeration("axis", "x", {"x", "y"}, "Which axis of the separable dilation")
-      .integer("dilation_kernel", 9, 3, kMaxKernel, "pixels", "Dilation kernel K (odd), sigma = K / 3").step(2);
+      .required()
+      .integer("dilation_kernel", 9, 3, kMaxKernel, "pixels",
+               "Pass 3's dilation kernel K, odd; Gaussian fall-off sigma = K / 3")
+      .step(2);
   add_depth_aware(b);
   add_kernel_shape(b);
   return b.build<DilatePass>();

@@ -76,15 +76,31 @@ exec::PassType distance_map_pass_type() {
   b.image_out("distance_map", {Format::RGBA16F})
       .image_out("kernel_shape", {Format::RGBA16F})
       .same_size({"position", "normal", "distance_map", "kernel_shape"})
-      .enumeration("shadow_test", "bilinear", {"bilinear", "nearest"}, "How S is tested")
-      .enumeration("mapping", "physical", {"physical", "paper"}, "Occluder distance to D")
-      .real("distance_power", 3.0, 0.1, 10.0, "", "Dp")
-      .real("distance_multiplier", 200.0, 0.0, 100000.0, "", "Dm")
-      .real("light_size_scale", 1.0, 0.0, 10.0, "", "Multiplier on the light's diameter (physical)")
-      .boolean("anisotropic", true, "Kernels shaped like the receiver's penumbra footprint")
-      .enumeration("alteration", "multipass", {"pcf", "gaussian", "multipass"}, "What D drives")
-      .integer("max_passes", 10, 1, kMaxPasses, "", "Multi-pass blur passes")
-      .real("depth_bias", 0.0005, 0.0, 0.05, "window depth", "Subtracted from the receiver depth");
+      .enumeration("shadow_test", "bilinear", {"bilinear", "nearest"},
+                   "Pass 2's hard shadow S: bilinear = the 2x2 nearest texels compared and weighted bilinearly (keeps "
+                   "the edge's position inside a texel); nearest = the paper's bit from one texel")
+      .enumeration("mapping", "physical", {"physical", "paper"},
+                   "Occluder distance to D: physical = PCSS penumbra width from the scene light's size, in pixels "
+                   "(section 6); paper = (distance / light depth range)^Dp * Dm (section 3.2)")
+      .real("distance_power", 3.0, 0.1, 10.0, "",
+            "Dp of the paper mapping: exponent of the normalised occluder distance (Figure 5: 3.0; 1.9 for the "
+            "single-pass Gaussian)")
+      .real("distance_multiplier", 200.0, 0.0, 100000.0, "",
+            "Dm of the paper mapping: D = (distance / light depth range)^Dp * Dm, in kernel pixels (PCF, Gaussian) or "
+            "passes (multi-pass) (Figure 5: 200)")
+      .real("light_size_scale", 1.0, 0.0, 10.0, "",
+            "Physical mapping: multiplier on the scene light's emitter diameter (the one PCSS and the reference use)")
+      .boolean("anisotropic", true,
+               "Shape every screen-space kernel like the receiver's penumbra footprint on screen (stretched along the "
+               "light, foreshortened by the view; at most 6:1); off: round kernels, as in the paper")
+      .enumeration("alteration", "multipass", {"pcf", "gaussian", "multipass"},
+                   "Pass 4 (section 3.1): PCF of S with a D-sized box, a single-pass separable Gaussian of size D, or "
+                   "multi-pass Gaussian blurs counted down by D")
+      .integer("max_passes", 10, 1, kMaxPasses, "",
+               "Multi-pass: number of blur passes in the graph (repeat); D counts down one per pass (Figure 5G: 10; "
+               "hard bound 32)")
+      .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
+            "Subtracted from the receiver depth before the hard shadow comparison (pass 2)");
   add_max_kernel(b);
   add_multipass_kernel(b);
   return b.build<DistanceMapPass>();

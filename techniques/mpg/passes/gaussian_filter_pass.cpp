@@ -35,7 +35,7 @@ exec::PassType gaussian_filter_pass_type() {
   exec::PassDeclBuilder b = distance_map_filter(
       "mpg_gaussian_filter",
       "mpg pass 4, single-pass Gaussian: S filtered by a Gaussian of size D, one axis (Cherry & Kooima 3.1)");
-  b.enumeration("axis", "x", {"x", "y"}, "Which axis of the separable Gaussian");
+  b.enumeration("axis", "x", {"x", "y"}, "Which axis of the separable Gaussian").required();
   add_max_kernel(b);
   add_depth_aware(b);
   add_kernel_shape(b);

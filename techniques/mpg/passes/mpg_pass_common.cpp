@@ -23,18 +23,31 @@ GLuint linear_sampler(std::optional<gl::Sampler>& sampler) {
 }
 
 exec::PassDeclBuilder& add_max_kernel(exec::PassDeclBuilder& b) {
-  return b.integer("max_kernel", 19, 3, kMaxKernel, "pixels", "Largest filter kernel (odd)").step(2);
+  return b.integer("max_kernel", 19, 3, kMaxKernel, "pixels",
+                   "Largest kernel, odd: PCF and Gaussian sizes are clamped to it; the multi-pass kernel is this size "
+                   "(fixed) or grows to it from 3x3 (Figure 5: 19)")
+      .step(2);
 }
 
 exec::PassDeclBuilder& add_depth_aware(exec::PassDeclBuilder& b) {
-  return b.boolean("depth_aware", true, "Leave out taps on another surface")
-      .real("depth_tolerance", 0.1, 0.001, 10.0, "", "Relative view-depth difference of one surface");
+  return b.boolean("depth_aware", true,
+                   "Leave out filter taps on another surface (farther than depth_tolerance from the centre receiver's "
+                   "plane); not in the paper, which filters across depth edges")
+      .real("depth_tolerance", 0.1, 0.001, 10.0, "",
+            "Depth-aware taps: largest distance of a tap from the centre receiver's plane, as a fraction of the "
+            "centre's view depth");
 }
 
 exec::PassDeclBuilder& add_multipass_kernel(exec::PassDeclBuilder& b) {
-  return b.enumeration("kernel_mode", "progressive", {"progressive", "fixed"}, "Kernel size per blur pass")
-      .integer("poisson_taps", 20, 1, 64, "", "Poisson-disk taps per blur pass")
-      .enumeration("kernel_sampling", "poisson", {"poisson", "dense"}, "Poisson taps or every kernel texel");
+  return b.enumeration("kernel_mode", "progressive", {"progressive", "fixed"},
+                       "Multi-pass kernel size per pass: progressive = 3x3 on the first pass, 2 pixels wider each pass "
+                       "up to max_kernel; fixed = max_kernel every pass")
+      .integer("poisson_taps", 20, 1, 64, "",
+               "Multi-pass: taps per blur pass, the first N of 64 precomputed Poisson-disk points in [-1, 1]^2, the "
+               "first at the origin (Figure 5G: 20)")
+      .enumeration("kernel_sampling", "poisson", {"poisson", "dense"},
+                   "Multi-pass: poisson_taps Poisson points, or every texel of the kernel (the 'entire Gaussian' of "
+                   "Figure 7; KS^2 taps, a reference, slow)");
 }
 
 void set_depth_aware_uniforms(const gl::Program& program, const exec::PassContext& ctx) {

@@ -40,7 +40,10 @@ exec::PassType umbra_early_out_pass_type() {
       "mpg_umbra_early_out", "mpg umbra early-out: D = 0 where the whole neighbourhood is shadowed, one axis "
                              "(Cherry & Kooima 5)");
   b.enumeration("axis", "x", {"x", "y"}, "Which axis of the separable test")
-      .integer("umbra_neighbourhood", 31, 3, kMaxKernel, "pixels", "Neighbourhood size N (odd)").step(2);
+      .required()
+      .integer("umbra_neighbourhood", 31, 3, kMaxKernel, "pixels",
+               "Early-out neighbourhood N x N, odd, at least max_kernel (section 5: larger than the largest blur kernel)")
+      .step(2);
   add_max_kernel(b);
   return b.build<UmbraEarlyOutPass>();
 }

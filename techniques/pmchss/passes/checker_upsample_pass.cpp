@@ -35,7 +35,7 @@ exec::PassType checker_upsample_pass_type() {
       .image_out("mask", {Format::R16F})
       .same_size({"position", "mask"})
       .param(real_param("depth_epsilon", 0.001, 1e-6, 10.0, "world units",
-                        "eps of the neighbour weight 1 / (eps + |delta depth|)"))
+                        "eps of the upsample weight 1 / (eps + |delta linear depth|)"))
       .build<CheckerUpsamplePass>();
 }
 

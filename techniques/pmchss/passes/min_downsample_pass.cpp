@@ -32,8 +32,8 @@ exec::PassType min_downsample_pass_type() {
       .describe("Min of each block of the shadow map, window depth (Sterna 2018, 2.3)")
       .sampled("shadow_map", {Format::DEPTH32F})
       .image_out("min_depth", {Format::R32F})
-      .param(real_param("shadow_filter_max_size", 0.002, 1e-4, 0.05, "shadow-map UV", "Largest PCF kernel radius"))
-      .param(real_param("penumbra_kernel_scale", 1.2, 1.0, 2.0, "", "Search radius / filter radius"))
+      .param(shadow_filter_max_size_param())
+      .param(penumbra_kernel_scale_param())
       .build<MinDownsamplePass>();
 }
 

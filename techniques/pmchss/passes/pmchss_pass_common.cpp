@@ -11,17 +11,31 @@ namespace penumbra::pmchss {
 using graph::ParamDesc;
 using graph::ParamType;
 
+// Defaults from Sterna 2018 and its demo (the technique's own defaults are tuned against the
+// reference and stated in pmchss.json): 0.002 UV max kernel radius, 1.2 search scale (section
+// 2.2), k = 80 (Listing 4).
+ParamDesc shadow_filter_max_size_param() {
+  return real_param("shadow_filter_max_size", 0.002, 1e-4, 0.05, "shadow-map UV",
+                    "Largest PCF kernel radius, shadowFilterMaxSize (the paper: 0.002 UV = 4.1 texels at 2048^2; "
+                    "physical: a cap on the light's own penumbra)");
+}
+
+ParamDesc penumbra_kernel_scale_param() {
+  return real_param("penumbra_kernel_scale", 1.2, 1.0, 2.0, "",
+                    "Blocker search radius / shadow_filter_max_size (section 2.2: 1.2; artifacts gone in about [1.2, 1.6])");
+}
+
 std::vector<ParamDesc> penumbra_params() {
-  // Defaults from Sterna 2018 and its demo: 0.002 UV max kernel radius, 1.2 search scale
-  // (section 2.2), k = 80 (Listing 4).
-  return {real_param("shadow_filter_max_size", 0.002, 1e-4, 0.05, "shadow-map UV",
-                     "Largest PCF kernel radius"),
-          real_param("penumbra_kernel_scale", 1.2, 1.0, 2.0, "", "Blocker search radius / filter radius"),
+  return {shadow_filter_max_size_param(), penumbra_kernel_scale_param(),
           enum_param("penumbra_mapping", "paper", {"paper", "physical", "fixed"},
-                     "Blocker depth to penumbra"),
-          real_param("k", 80.0, 0.1, 10000.0, "", "Listing 4 scale of p^2"),
-          real_param("depth_bias", 0.0005, 0.0, 0.05, "window depth", "Comparison bias"),
-          bool_param("receiver_plane_bias", true, "Tilt comparisons along the receiver plane")};
+                     "Blocker depth to kernel: paper saturate(k p^2) (Listing 4); physical PCSS width (Listing 5); "
+                     "fixed 1 (Table 1 row 1)"),
+          real_param("k", 80.0, 0.1, 10000.0, "", "Scale of p^2 in the paper mapping (Listing 4: 80)"),
+          real_param("depth_bias", 0.0005, 0.0, 0.05, "window depth",
+                     "Subtracted from the receiver depth before each comparison"),
+          bool_param("receiver_plane_bias", true,
+                     "Extrapolate the receiver depth along its plane to each tap (not in the paper; removes acne of "
+                     "wide kernels)")};
 }
 
 void set_pmchss_uniforms(const gl::Program& p, exec::PassContext& ctx) {

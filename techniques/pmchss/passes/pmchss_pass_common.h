@@ -11,8 +11,8 @@
 
 namespace penumbra::pmchss {
 
-// Declaration helpers (the graph JSON holds the user-facing descriptions; a pass type declares
-// the slots' parameter types and ranges so a bad binding is a compile error).
+// Declaration helpers. The pass types hold the one description of their parameters; pmchss.json
+// exposes them, stating only its own defaults (docs/graph-format.md "Parameters").
 using graph::bool_param;
 using graph::enum_param;
 using graph::int_param;
@@ -21,6 +21,9 @@ using graph::real_param;
 // Parameters every pass that searches blockers or maps a penumbra takes: shadow_filter_max_size,
 // penumbra_kernel_scale, penumbra_mapping, k, depth_bias, receiver_plane_bias.
 std::vector<graph::ParamDesc> penumbra_params();
+// Two of them, also taken by the min-filter passes.
+graph::ParamDesc shadow_filter_max_size_param();
+graph::ParamDesc penumbra_kernel_scale_param();
 
 // Sets u_shadow_filter_max_size, u_search_radius, u_penumbra_k, u_depth_bias,
 // u_receiver_plane and the light uniforms (shadow_common.glsl).

@@ -60,6 +60,7 @@ exec::PassType separable_filter_pass_type() {
       .same_size({"input", "output"})
       .param(enum_param("mode", "gaussian", {"gaussian", "max", "min", "copy"}, "Filter kind"))
       .param(enum_param("axis", "x", {"x", "y"}, "Filter direction"))
+      .required()
       .param(int_param("radius", 3, 0, 16, "texels", "Taps each side (7x7 = radius 3)"))
       .param(real_param("sigma", 3.0, 0.1, 16.0, "texels", "Gaussian standard deviation"))
       .param(real_param("radius_uv", 0.0, 0.0, 0.05, "shadow-map UV",

@@ -68,7 +68,7 @@ exec::PassType shadow_mask_pass_type() {
   for (graph::ParamDesc& d : penumbra_params()) b.param(std::move(d));
   return b.param(enum_param("source", "search", {"search", "mask", "min_depth"}, "Where the penumbra comes from"))
       .param(int_param("blocker_samples", 16, 4, 64, "", "Blocker search taps (source=search)"))
-      .param(int_param("filter_samples", 16, 4, 64, "", "PCF taps"))
+      .param(int_param("filter_samples", 16, 4, 64, "", "PCF taps of the shadow mask, each a 2x2 hardware comparison (Listing 6: 16)"))
       .param(bool_param("checkerboard", false, "Compute (x + y) even pixels only, packed RG16F"))
       .build<ShadowMaskPass>();
 }

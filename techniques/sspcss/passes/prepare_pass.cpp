@@ -47,8 +47,12 @@ exec::PassType prepare_pass_type() {
              "distance), view depth, faces-away flag per pixel (compute)")
       .image_out("projected", {Format::RGBA32F})
       .same_size({"position", "normal", "projected"})
-      .real("depth_bias", 0.0002, 0.0, 0.05, "", "Subtracted from the receiver-plane depth")
-      .boolean("subpixel_hard_shadow", true, "2x2 sub-pixel samples per pixel (false: the centre only)")
+      .real("depth_bias", 0.0002, 0.0, 0.05, "window depth",
+            "Constant bias subtracted from the receiver-plane depth in the hard shadow's comparison")
+      .boolean("subpixel_hard_shadow", true,
+               "Hard shadow from 2x2 sub-pixel samples on the receiver plane (anti-aliased: shadows thinner than a "
+               "pixel still reach the search and the filter); false = one sample at the pixel centre, 4x fewer "
+               "shadow-map reads")
       .build<PreparePass>();
 }
 

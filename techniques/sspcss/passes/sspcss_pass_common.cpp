@@ -10,37 +10,48 @@ namespace penumbra::sspcss {
 
 using graph::ParamDesc;
 
-// Type, valid range and a short text; the technique parameters (sspcss.json) that feed these one
-// to one hold the user-facing default, unit and description, and the same ranges. (The builder
-// wants a default: the technique's.)
+// The papers' values where they give one; sspcss.json states the defaults tuned against the
+// reference (docs/graph-format.md "Parameters": the pass types hold the one description).
 std::vector<ParamDesc> range_params() {
-  return {graph::real_param("depth_sigma", 0.02, 0.001, 1.0, "",
-                            "Range-term sigma, relative to the centre's view depth"),
-          graph::bool_param("range_term", true, "Weight taps by their depth difference (cross-bilateral)")};
+  return {graph::real_param("depth_sigma", 0.02, 0.001, 1.0, "fraction of view depth",
+                            "Sigma of the range term: camera-space depth difference of a tap from the centre pixel's "
+                            "tangent plane, relative to the centre's view depth"),
+          graph::bool_param("range_term", true,
+                            "Edge-aware (cross-bilateral) weighting; false = plain Gaussian / Poisson domain filter that "
+                            "bleeds across depth edges (for comparison)")};
 }
 
 ParamDesc footprint_param() {
   return graph::bool_param("receiver_footprint", true,
-                           "Shape the kernel as the penumbra's footprint on the receiver, seen on screen");
+                           "Shape the kernels as the penumbra's footprint on the receiver seen from the camera (stretched "
+                           "along the light on a slanted receiver, foreshortened by the view); false = the paper's round "
+                           "kernel of diameter W_screen");
 }
 
 std::vector<ParamDesc> search_params() {
-  return {graph::real_param("light_size_scale", 1.0, 0.0, 10.0, "", "Multiplier on the light's diameter"),
-          graph::real_param("max_penumbra_px", 64.0, 1.0, 256.0, "",
-                            "Clamp of W_screen and of the blocker-search width")};
+  return {graph::real_param("light_size_scale", 1.0, 0.0, 10.0, "",
+                            "Multiplier on the light's emitter diameter (the scene light's size, W_light)"),
+          graph::real_param("max_penumbra_px", 64.0, 1.0, 256.0, "pixels",
+                            "Largest screen extent of the filter kernel (W_screen, stretched by the receiver footprint) "
+                            "and of the blocker-search kernel")};
 }
 
 ParamDesc fixed_radius_param() {
-  return graph::real_param("fixed_radius_px", 0.0, 0.0, 128.0, "",
-                           "> 0: W_screen = 2 x this on every receiver (benchmark/debug)");
+  return graph::real_param("fixed_radius_px", 0.0, 0.0, 128.0, "pixels",
+                           "Benchmark/debug: when > 0, every receiver's W_screen is 2 x this radius, found blocker or not "
+                           "(the blocker search still runs; with receiver_footprint off the kernel is exactly that disk); "
+                           "0 = off");
 }
 
 ParamDesc separable_taps_param() {
-  return graph::int_param("separable_taps", 16, 3, 64, "", "Taps of one separable pass");
+  return graph::int_param("separable_taps", 16, 3, 64, "",
+                          "Taps of each separable pass, whatever the kernel radius: every pixel of the kernel while it "
+                          "fits, else one jittered tap per equal stratum (cost independent of the radius)");
 }
 
 ParamDesc poisson_taps_param() {
-  return graph::int_param("poisson_taps", 32, 4, 64, "", "Taps of the Poisson disk");
+  return graph::int_param("poisson_taps", 32, 4, 64, "",
+                          "Taps of the 2D Poisson disk (a fixed best-candidate set rotated per pixel)");
 }
 
 void set_screen_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {

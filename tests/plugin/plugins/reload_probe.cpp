@@ -30,6 +30,7 @@ void register_technique(penumbra::plugin::TechniqueRegistry& registry) {
                                   .describe("Test: shadow_mask = level * the build's factor")
                                   .image_out("mask", {penumbra::graph::Format::R16F})
                                   .real("level", 0.5, 0.0, 1.0, "", "mask value before the build's factor")
+                                  .integer("marker", 3, 0, 10, "", "read by nothing: a parameter one build's graph exposes")
                                   .build<FillPass>());
                 }});
 }
