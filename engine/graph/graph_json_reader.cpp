@@ -68,7 +68,10 @@ void GraphReader::get_text(const Json& obj, const char* key, const std::string& 
     return;
   }
   out.clear();
-  for (const Json& line : *it) out += (out.empty() ? "" : " ") + line.get<std::string>();
+  for (const Json& line : *it) {
+    if (!out.empty()) out += ' ';
+    out += line.get<std::string>();
+  }
 }
 
 void GraphReader::get_enabled(const Json& obj, const std::string& ptr, std::string& out) {
