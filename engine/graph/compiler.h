@@ -8,8 +8,8 @@
 //   if (!plan) for (const auto& e : plan.errors()) std::cerr << e.to_string() << "\n";
 //   else std::cout << to_text(*plan);
 //
-// Stages (compile.cpp reads top to bottom): validate -> expand -> resolve versions -> cull
-// -> order -> lifetimes -> assign physical resources -> plan barriers.
+// compile() is a pipeline of stages, one function per file; compile.cpp is their one list, in
+// order, each with the one thing it decides.
 #include "graph/graph_desc.h"
 #include "graph/graph_errors.h"
 #include "graph/pass_types.h"

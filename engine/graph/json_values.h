@@ -1,6 +1,7 @@
 #pragma once
-// Internal to the two JSON translation units (graph_json.cpp, parameters_json.cpp): JSON value
-// -> ParamValue with range checks (util/json_text.h guards the text before nlohmann parses it).
+// Internal to the JSON readers (graph_json_parameters.cpp, graph_json_passes.cpp,
+// parameters_json.cpp): JSON value -> ParamValue with range checks (util/json_text.h guards
+// the text before nlohmann parses it).
 #include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
