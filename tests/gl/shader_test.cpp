@@ -73,7 +73,7 @@ TEST_F(Shaders, IncludeWithAFolderResolvesThroughAnIncludeDirectory) {
 // climbing path only works in one layout of the files (the source tree, not a plugin folder).
 TEST_F(Shaders, IncludeThatClimbsIsAnErrorNamingFileAndLine) {
   write("lib/base.glsl", "float base() { return 21.0; }\n");
-  for (const std::string& name : {"../lib/base.glsl", "lib/../lib/base.glsl", "/lib/base.glsl"}) {
+  for (const std::string name : {"../lib/base.glsl", "lib/../lib/base.glsl", "/lib/base.glsl"}) {
     write("pass/main.comp.glsl", "#version 450 core\n\n#include \"" + name + "\"\n");
     auto out = gl::preprocess_shader("pass/main.comp.glsl", files_);
     ASSERT_FALSE(out) << name;

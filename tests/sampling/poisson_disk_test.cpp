@@ -66,7 +66,7 @@ TEST(PoissonDisk, EveryPointLiesInsideItsDomain) {
 
 // The minimum distance: n points spread evenly over a domain of area A are about sqrt(A / n)
 // apart; every prefix of a best-candidate set keeps its closest pair above half of that
-// (measured 0.7-1.2 of it), where n uniform random points typically have a pair ~10x closer.
+// (measured 0.8-1.5 of it), where n uniform random points typically have a pair ~10x closer.
 TEST(PoissonDisk, EveryPrefixKeepsItsPointsApart) {
   for (const Case& c : kCases) {
     const std::vector<glm::vec2> p = poisson_disk(64, c.options);
