@@ -43,13 +43,16 @@ class ShaderFileSystem {
   std::optional<std::filesystem::path> disk_path(const std::string& path) const;
   // Modification time on disk (hot reload); nullopt for embedded-only files.
   std::optional<std::filesystem::file_time_type> modified(const std::string& path) const;
-  // Directories searched for an #include that is not found next to the including file.
+  // Directories (relative to every root) searched, in order, for an #include that is not found
+  // next to the including file: engine/gl/shaders, then passes, so a shader anywhere (a
+  // technique, a plugin) writes `#include "common/shadow_common.glsl"` or
+  // `"sampling/sampling.glsl"`. The rule is documented once, in docs/writing-a-technique.md.
   const std::vector<std::string>& include_dirs() const { return include_dirs_; }
   void add_include_dir(std::string dir) { include_dirs_.push_back(std::move(dir)); }
 
  private:
   std::vector<std::filesystem::path> roots_;
-  std::vector<std::string> include_dirs_ = {"engine/gl/shaders", "passes/common"};
+  std::vector<std::string> include_dirs_ = {"engine/gl/shaders", "passes"};
   bool use_embedded_ = true;
 };
 

@@ -4,7 +4,8 @@
 // Each file gets a source-string number; the output carries `#line N <number>` after every
 // include boundary, so the driver's "0:12(3): error" (Mesa) or "3(12) : error" (NVIDIA) can be
 // mapped back to "passes/blur/blur.comp.glsl:12". Includes resolve relative to the including
-// file first, then through the file system's include directories. A file included twice is
+// file first, then through the file system's include directories (shader_files.h); a name with
+// `..` or an absolute one is an error, as it never needs to climb. A file included twice is
 // pasted once (include guards are implicit). #version stays the first line; defines follow it.
 #include <string>
 #include <utility>

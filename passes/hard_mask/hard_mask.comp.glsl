@@ -2,7 +2,7 @@
 // Hard shadow: one depth comparison per pixel at the nearest shadow-map texel; the mask is
 // exactly 0 or 1.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "../common/shadow_common.glsl"
+#include "common/shadow_common.glsl"
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_position;
 uniform sampler2D u_normal;

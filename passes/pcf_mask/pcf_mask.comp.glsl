@@ -7,8 +7,8 @@
 // Each tap is a bilinear hardware comparison against the receiver plane (Isidoro
 // 2006) minus a small constant bias.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "../common/shadow_common.glsl"
-#include "../common/noise.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
 #include "shadow_taps.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
@@ -34,7 +34,7 @@ void main() {
       for (int x = -h; x <= h; ++x) sum += pcf_tap(u_shadow_map, r, vec2(x, y) * texel, u_depth_bias);
     lit = sum / float((2 * h + 1) * (2 * h + 1));
 #else
-    float phi = 6.28318530718 * interleaved_gradient_noise(vec2(p));
+    float phi = noise_rotation(vec2(p));
     for (int i = 0; i < u_samples; ++i) {
       vec2 o = vogel_disk_sample(i, u_samples, phi) * u_radius * texel;
       sum += pcf_tap(u_shadow_map, r, o, u_depth_bias);

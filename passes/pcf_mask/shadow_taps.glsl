@@ -1,7 +1,7 @@
 // Shadow-map filtering helpers shared by the PCF and PCSS passes: the receiver (its plane,
 // passes/common/receiver_plane.glsl) and one hardware-compared tap.
-// Needs: ../common/shadow_common.glsl included before.
-#include "../common/receiver_plane.glsl"
+// Needs: common/shadow_common.glsl included before.
+#include "common/receiver_plane.glsl"
 
 // One hardware-compared tap: a sampler2DShadow with GL_LINEAR + GL_COMPARE_REF_TO_TEXTURE
 // returns the bilinear weight of the 2x2 texels that pass (bilinear PCF), 1 = lit.

@@ -14,9 +14,9 @@
 // rotated per pixel by 2 pi IGN(pixel), each a textureGather of 4 raw depths (so 4 x samples
 // texels), each compared against the receiver plane (Isidoro 2006) minus a constant bias.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "../common/shadow_common.glsl"
-#include "../common/noise.glsl"
-#include "../pcf_mask/shadow_taps.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
+#include "pcf_mask/shadow_taps.glsl"
 
 layout(r32f, binding = 0) uniform writeonly image2D u_blocker;
 uniform sampler2D u_position;
@@ -36,7 +36,7 @@ void main() {
     float d_r = light_distance(r.coord.z);
     float width = min(blocker_search_width_uv(d_r) * u_light_size_scale, u_max_search_uv);
     float radius = 0.5 * width;
-    float phi = 6.28318530718 * interleaved_gradient_noise(vec2(p));
+    float phi = noise_rotation(vec2(p));
     float sum = 0.0;
     int count = 0;
     for (int i = 0; i < u_samples; ++i) {

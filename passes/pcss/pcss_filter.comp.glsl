@@ -11,9 +11,9 @@
 // pixel by 2 pi IGN(pixel), each a bilinear hardware comparison against the receiver plane.
 // Pixels where the blocker search found nothing are exactly 1 (lit).
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "../common/shadow_common.glsl"
-#include "../common/noise.glsl"
-#include "../pcf_mask/shadow_taps.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
+#include "pcf_mask/shadow_taps.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_position;
@@ -35,7 +35,7 @@ void main() {
     float d_r = light_distance(r.coord.z);
     float w_penumbra = min(penumbra_width_uv(d_r, d_b) * u_light_size_scale, u_max_filter_uv);
     float radius = 0.5 * w_penumbra;
-    float phi = 6.28318530718 * interleaved_gradient_noise(vec2(p));
+    float phi = noise_rotation(vec2(p));
     float sum = 0.0;
     for (int i = 0; i < u_samples; ++i)
       sum += pcf_tap(u_shadow_map, r, vogel_disk_sample(i, u_samples, phi) * radius, u_depth_bias);

@@ -7,8 +7,8 @@
 #include <unordered_map>
 
 #include "baseline_frame.h"
-#include "metrics/heat_map.h"
 #include "scene/builtin_scenes.h"
+#include "test_support/inspection.h"
 
 namespace penumbra::test {
 namespace {
@@ -37,8 +37,7 @@ TEST(Baselines, EveryBuiltinSceneRendersWithEveryBaseline) {
       SCOPED_TRACE(t + " on " + name);
       RenderedFrame f = r.render(s, t, {}, kW, kH);
       ASSERT_EQ(f.mask.pixels.size(), size_t(kW) * kH);
-      if (const char* dir = std::getenv("PENUMBRA_TEST_OUT"))
-        (void)metrics::write_png(std::string(dir) + "/all_" + s.name + "_" + t + ".png", f.mask);
+      save_for_inspection("all_" + s.name + "_" + t, f.mask);
       size_t lit = 0, shadowed = 0, receivers = 0;
       for (size_t i = 0; i < f.mask.pixels.size(); ++i) {
         const float v = f.mask.pixels[i];
@@ -139,7 +138,7 @@ void expect_fully_lit_stays_one(BaselineRenderer& r, const scene::Scene& s, cons
   for (size_t i = 0; i < hard.mask.pixels.size(); ++i)
     if (hard.coverage[i] && (hard.mask.pixels[i] == 0.0f || at_depth_edge(hard, int(i % kW), int(i / kW))))
       shadowed.add(uv_of(i));
-  // Debug view (PENUMBRA_TEST_OUT): the soft mask in grey, failing pixels red.
+  // Debug view (save_for_inspection): the soft mask in grey, failing pixels red.
   metrics::RgbaImage debug{kW, kH, std::vector<uint8_t>(size_t(kW) * kH * 4, 255)};
   for (size_t i = 0; i < soft.mask.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c) debug.pixels[4 * i + c] = uint8_t(255.0f * soft.mask.pixels[i]);
@@ -163,8 +162,7 @@ void expect_fully_lit_stays_one(BaselineRenderer& r, const scene::Scene& s, cons
       debug.pixels[4 * i] = 255, debug.pixels[4 * i + 1] = debug.pixels[4 * i + 2] = 0;
     }
   }
-  if (const char* dir = std::getenv("PENUMBRA_TEST_OUT"); dir && failed)
-    (void)metrics::write_png(std::string(dir) + "/fully_lit_" + technique + "_" + s.name + ".png", upscaled(debug, 4));
+  if (failed) save_for_inspection("fully_lit_" + technique + "_" + s.name, upscaled(debug, 4));
   EXPECT_GT(checked, hard.mask.pixels.size() / 4);
   EXPECT_EQ(failed, 0u) << "of " << checked << " fully lit pixels; darkest " << worst;
 }

@@ -13,9 +13,9 @@
 #include <gtest/gtest.h>
 
 #include "baseline_frame.h"
-#include "metrics/heat_map.h"
 #include "metrics/penumbra_width.h"
 #include "raytraced_reference.h"
+#include "test_support/inspection.h"
 
 namespace penumbra::test {
 namespace {
@@ -36,9 +36,7 @@ Widths measured_widths(BaselineRenderer& r, const std::string& technique, float 
   const glm::vec2 p0 = project_to_pixel(s.camera, c, kW, kH);
   const glm::vec2 p1 = project_to_pixel(s.camera, c + glm::vec3(radius + 1.0f, 0.0f, 0.0f), kW, kH);
   RenderedFrame f = r.render(s, technique, {}, kW, kH);
-  if (const char* dir_out = std::getenv("PENUMBRA_TEST_OUT"))
-    (void)metrics::write_png(std::string(dir_out) + "/ball_" + technique + "_h" + std::to_string(height) + ".png",
-                             f.mask);
+  save_for_inspection("ball_" + technique + "_h" + std::to_string(height), f.mask);
   Widths out;
   Result<float> w = metrics::penumbra_width(f.mask, p0, p1);
   EXPECT_TRUE(w) << technique << " at ball_height " << height << ": " << (w ? "" : w.error().to_string());

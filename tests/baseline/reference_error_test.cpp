@@ -8,7 +8,7 @@
 // only), GPU timestamps with PENUMBRA_TEST_CONTEXT=egl on a GPU) and asserts the PCSS bounds
 // below. Reproduce with
 //   build/<dir>/tests/baseline/baseline_reference_tests
-// (PENUMBRA_TEST_OUT=DIR also writes the masks and error heat maps as PNG). On the GPU machine:
+// (PENUMBRA_TEST_IMAGES=DIR also writes the masks and error heat maps as PNG). On the GPU machine:
 //   scripts/gpu/bundle.sh build/bl_gpu build/<release>/tests/baseline/baseline_reference_tests
 //   (run, carry build/bl_gpu) source build/bl_gpu/env.sh && PENUMBRA_SHADER_DIR=$PWD
 //     PENUMBRA_TEST_CONTEXT=egl PENUMBRA_TEST_SIZE=1920x1080 PENUMBRA_TEST_FRAMES=60
@@ -23,6 +23,7 @@
 #include "metrics/mask_metrics.h"
 #include "raytraced_reference.h"
 #include "scene/builtin_scenes.h"
+#include "test_support/inspection.h"
 
 namespace penumbra::test {
 namespace {
@@ -69,13 +70,11 @@ std::map<std::string, Row> evaluate(BaselineRenderer& r, const std::string& scen
     EXPECT_TRUE(e);
     if (!e) continue;
     rows[t] = {*e, f.technique_ms, f.pass_ms};
-    if (const char* dir = std::getenv("PENUMBRA_TEST_OUT")) {
-      const std::string base = std::string(dir) + "/" + scene_name + "_" + t;
-      (void)metrics::write_png(base + "_mask.png", f.mask);
-      if (auto heat = metrics::error_heat_map(f.mask, ref, f.coverage, 0.25f))
-        (void)metrics::write_png(base + "_error.png", *heat);
-      (void)metrics::write_png(base + "_reference.png", ref);
-    }
+    const std::string base = scene_name + "_" + t;
+    save_for_inspection(base + "_mask", f.mask);
+    if (auto heat = metrics::error_heat_map(f.mask, ref, f.coverage, 0.25f))
+      save_for_inspection(base + "_error", *heat);
+    save_for_inspection(base + "_reference", ref);
   }
   return rows;
 }

@@ -2,11 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
 #include <limits>
 
-#include "metrics/heat_map.h"
 #include "raytraced_reference.h"
 #include "techniques/builtin_techniques.h"
 
@@ -31,13 +28,6 @@ metrics::MaskImage exact_hard_reference(TechniqueRig& rig, const scene::Scene& s
   const plugin::TechniqueSession& s = rig.session();
   return reference::trace_visibility(*rs, light, positions, normals, s.settings().screen_w, s.settings().screen_h,
                                      options, coverage);
-}
-
-void save_for_inspection(const std::string& name, const metrics::MaskImage& image) {
-  const char* dir = std::getenv("ESM_TEST_IMAGES");
-  if (!dir || image.width == 0) return;
-  std::filesystem::create_directories(dir);
-  (void)metrics::write_png(std::string(dir) + "/" + name + ".png", image);
 }
 
 }  // namespace penumbra::test

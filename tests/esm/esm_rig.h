@@ -6,6 +6,7 @@
 
 #include "metrics/mask_image.h"
 #include "scene/scene.h"
+#include "test_support/inspection.h"
 #include "test_support/technique_rig.h"
 
 namespace penumbra::test {
@@ -19,9 +20,5 @@ class EsmRig : public TechniqueRig {
 // The exact hard shadow of the rig's last frame (its scene's light with size 0), ray-traced from
 // that frame's G-buffer with K x K samples per pixel (box-filtered), rows top to bottom.
 metrics::MaskImage exact_hard_reference(TechniqueRig& rig, const scene::Scene& scene, int pixel_samples = 4);
-
-// Writes `image` to ESM_TEST_IMAGES/<name>.png when that environment variable names a
-// directory (for looking at the pictures); otherwise does nothing.
-void save_for_inspection(const std::string& name, const metrics::MaskImage& image);
 
 }  // namespace penumbra::test

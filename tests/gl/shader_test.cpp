@@ -58,6 +58,32 @@ TEST_F(Shaders, IncludeChainResolvesRelativeThenSearchPath) {
   EXPECT_EQ(run(p), 42.0f);
 }
 
+// An include directory is a root for names with folders: "sampling/noise.glsl" from anywhere.
+TEST_F(Shaders, IncludeWithAFolderResolvesThroughAnIncludeDirectory) {
+  fs::create_directories(root_ / "lib/sampling");
+  write("pass/main.comp.glsl", main_shader("sampling/noise.glsl"));
+  write("lib/sampling/noise.glsl", "#include \"twice.glsl\"\nfloat value() { return twice(4.0); }\n");
+  write("lib/sampling/twice.glsl", "float twice(float x) { return 2.0 * x; }\n");  // its sibling
+  gl::ShaderProgram p({.compute = "pass/main.comp.glsl"}, files_);
+  ASSERT_TRUE(p.build()) << p.last_error()->to_string() << p.last_error()->details;
+  EXPECT_EQ(run(p), 8.0f);
+}
+
+// `..` is refused even where the file exists: include directories make it unnecessary, and a
+// climbing path only works in one layout of the files (the source tree, not a plugin folder).
+TEST_F(Shaders, IncludeThatClimbsIsAnErrorNamingFileAndLine) {
+  write("lib/base.glsl", "float base() { return 21.0; }\n");
+  for (const std::string name : {"../lib/base.glsl", "lib/../lib/base.glsl", "/lib/base.glsl"}) {
+    write("pass/main.comp.glsl", "#version 450 core\n\n#include \"" + name + "\"\n");
+    auto out = gl::preprocess_shader("pass/main.comp.glsl", files_);
+    ASSERT_FALSE(out) << name;
+    EXPECT_EQ(out.error().file, "pass/main.comp.glsl") << name;
+    EXPECT_EQ(out.error().line, 3) << name;
+    EXPECT_NE(out.error().message.find("'..' and absolute paths are not allowed"), std::string::npos)
+        << out.error().message;
+  }
+}
+
 TEST_F(Shaders, FileIncludedTwiceIsPastedOnce) {
   write("pass/main.comp.glsl", "#version 450 core\n#include \"a.glsl\"\n#include \"a.glsl\"\n"
                                "float value() { return A; }\nlayout(local_size_x = 1) in;\n"
@@ -164,6 +190,23 @@ TEST_F(Shaders, DriverLogLinesMapToFiles) {
   Error nv = gl::map_compile_log("0(5) : error C0000: syntax error, unexpected '}'\n", files, "fragment");
   EXPECT_EQ(nv.file, "a.glsl");
   EXPECT_EQ(nv.line, 5);
+}
+
+// Every .glsl of the repository resolves its includes with the default include directories, read
+// from the source tree (development builds) and from the embedded table alone (bundled binaries).
+TEST(RepositoryShaders, EveryIncludeResolvesInTheTreeAndEmbedded) {
+  const gl::ShaderFileSystem tree({PENUMBRA_SOURCE_DIR}, false), embedded({}, true);
+  int shaders = 0;
+  for (const gl::EmbeddedShaderFile& f : gl::embedded_shader_files()) {
+    const std::string path = f.path;
+    if (!path.ends_with(".glsl")) continue;
+    ++shaders;
+    for (const gl::ShaderFileSystem* files : {&tree, &embedded}) {
+      auto out = gl::preprocess_shader(path, *files);
+      EXPECT_TRUE(out) << (out ? "" : out.error().to_string());
+    }
+  }
+  EXPECT_GT(shaders, 40);
 }
 
 TEST(EmbeddedShaders, RepositoryShadersAreEmbedded) {

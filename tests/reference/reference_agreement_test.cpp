@@ -7,6 +7,7 @@
 #include "metrics/mask_metrics.h"
 #include "reference_session.h"
 #include "techniques/reference/reference_progress.h"
+#include "test_support/inspection.h"
 
 using namespace penumbra;
 
@@ -35,12 +36,11 @@ Agreement raster_vs_raytraced(const std::string& scene) {
   EXPECT_EQ(p.done, 256);
   EXPECT_TRUE(p.complete());
   const metrics::MaskImage raster = r.mask();
-  if (const char* dir = std::getenv("PENUMBRA_TEST_DUMP")) {  // images to look at when it fails
-    (void)metrics::write_png(std::string(dir) + "/" + scene + "_raytraced.png", a.raytraced);
-    (void)metrics::write_png(std::string(dir) + "/" + scene + "_raster.png", raster);
-    if (auto heat = metrics::error_heat_map(raster, a.raytraced, coverage, 0.25f))
-      (void)metrics::write_png(std::string(dir) + "/" + scene + "_error.png", *heat);
-  }
+  // Pictures to look at when it fails.
+  test::save_for_inspection(scene + "_raytraced", a.raytraced);
+  test::save_for_inspection(scene + "_raster", raster);
+  if (auto heat = metrics::error_heat_map(raster, a.raytraced, coverage, 0.25f))
+    test::save_for_inspection(scene + "_error", *heat);
   auto e = metrics::compare_masks(raster, a.raytraced, coverage);
   EXPECT_TRUE(e);
   a.errors = *e;

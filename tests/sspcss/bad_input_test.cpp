@@ -26,9 +26,9 @@ void expect_sane(BaselineRenderer& r, const RenderedFrame& f, const std::string&
   ASSERT_EQ(f.mask.pixels.size(), static_cast<size_t>(kW) * kH) << what;
   EXPECT_EQ(bad_texels(f.mask, true), 0) << what << ": shadow_mask";
   for (const char* debug : {"blocker_distance", "penumbra_width"})
-    EXPECT_EQ(bad_texels(read_resource(r.session(), debug), false), 0) << what << ": " << debug;
+    EXPECT_EQ(bad_texels(r.read(debug), false), 0) << what << ": " << debug;
   for (int c = 0; c < 4; ++c)
-    EXPECT_EQ(bad_texels(read_resource(r.session(), "projected_shadow_map", c), false), 0)
+    EXPECT_EQ(bad_texels(r.read("projected_shadow_map", c), false), 0)
         << what << ": projected_shadow_map channel " << c;
 }
 
@@ -73,8 +73,8 @@ TEST(SspcssBadInput, ZeroSizeLightGivesTheHardShadow) {
     s.light.size = 0.0f;
     RenderedFrame f = r.render(s, "sspcss", {{"filter", filter}}, kW, kH);
     expect_sane(r, f, filter);
-    const metrics::MaskImage width = read_resource(r.session(), "penumbra_width");
-    const metrics::MaskImage hard = read_resource(r.session(), "projected_shadow_map", 0);
+    const metrics::MaskImage width = r.read("penumbra_width");
+    const metrics::MaskImage hard = r.read("projected_shadow_map", 0);
     float widest = 0.0f, largest_difference = 0.0f;
     int shadowed = 0;
     for (size_t i = 0; i < f.mask.pixels.size(); ++i) {

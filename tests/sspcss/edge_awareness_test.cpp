@@ -35,8 +35,8 @@ Probe probe(BaselineRenderer& r, const scene::Scene& s, const std::map<std::stri
             const std::string& tag) {
   RenderedFrame f = r.render(s, "sspcss", params, kW, kH);
   save_for_inspection("edge_" + tag, f.mask);
-  metrics::MaskImage depth = read_resource(r.session(), "projected_shadow_map", 2);  // view depth
-  metrics::MaskImage hard = read_resource(r.session(), "projected_shadow_map", 0);   // hard visibility
+  metrics::MaskImage depth = r.read("projected_shadow_map", 2);  // view depth
+  metrics::MaskImage hard = r.read("projected_shadow_map", 0);   // hard visibility
   const glm::vec2 edge = project_to_pixel(s.camera, {kBoxRight, 1.0f, 3.3f}, kW, kH);
   const int y = static_cast<int>(edge.y);
   // The silhouette: the first pixel right of the box's projected edge whose depth jumps by 20%.

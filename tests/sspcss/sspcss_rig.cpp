@@ -2,27 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
-
-#include "metrics/heat_map.h"
 #include "metrics/mask_metrics.h"
 #include "raytraced_reference.h"
 #include "scene/mesh_builder.h"
 
 namespace penumbra::test {
-
-metrics::MaskImage read_resource(plugin::TechniqueSession& session, const std::string& name, int channel) {
-  gl::Texture* t = session.executor().resource(name);
-  if (!t) return {};
-  std::vector<float> texels = t->read();  // rows bottom to top
-  const int channels = t->info().channels;
-  metrics::MaskImage m(t->width(), t->height());
-  for (int y = 0; y < t->height(); ++y)
-    for (int x = 0; x < t->width(); ++x)
-      m.at(x, t->height() - 1 - y) = texels[(static_cast<size_t>(y) * t->width() + x) * channels + channel];
-  return m;
-}
 
 metrics::MaskImage trace_reference(const scene::Scene& scene, const RenderedFrame& frame) {
   Result<reference::RayScene> rs = reference::RayScene::build(scene);
@@ -37,13 +21,6 @@ double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& r
   Result<metrics::MaskErrors> e = metrics::compare_masks(mask, reference, coverage);
   EXPECT_TRUE(e) << (e ? "" : e.error().to_string());
   return e ? e->rmse_penumbra : 1.0;
-}
-
-void save_for_inspection(const std::string& name, const metrics::MaskImage& image) {
-  const char* dir = std::getenv("SSPCSS_TEST_IMAGES");
-  if (!dir || image.width == 0) return;
-  std::filesystem::create_directories(dir);
-  (void)metrics::write_png(std::string(dir) + "/" + name + ".png", image);
 }
 
 scene::Scene edge_test_scene() {

@@ -3,12 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 
 #include "metrics/mask_metrics.h"
 #include "sspcss_rig.h"
-#include "techniques/sspcss/passes/poisson_disk.h"
 
 namespace penumbra::test {
 namespace {
@@ -73,26 +71,6 @@ TEST(SspcssVariants, SeparableAndPoissonAgree) {
                 name, e->rmse_penumbra, e->rmse, hard->rmse_penumbra);
     EXPECT_LT(e->rmse_penumbra, kBound) << name;
     EXPECT_GT(hard->rmse_penumbra, 1.5 * kBound) << name << ": the bound would not tell soft from hard here";
-  }
-}
-
-// The Poisson set: deterministic, inside the unit disk, and well spread: its closest pair is far
-// apart compared to uniform random points (for n points in the unit disk a Poisson disk's
-// spacing is about 0.8 sqrt(pi / n); random points typically have a pair ~10x closer).
-TEST(SspcssVariants, PoissonDiskIsDeterministicAndSpread) {
-  for (int n : {4, 16, 32, 64}) {
-    const std::vector<glm::vec2> a = sspcss::poisson_disk(n), b = sspcss::poisson_disk(n);
-    ASSERT_EQ(a.size(), static_cast<size_t>(n));
-    EXPECT_EQ(a, b) << n;
-    float closest = 1e9f;
-    for (size_t i = 0; i < a.size(); ++i) {
-      EXPECT_LE(glm::length(a[i]), 1.0f + 1e-6f);
-      for (size_t j = i + 1; j < a.size(); ++j) closest = std::min(closest, glm::distance(a[i], a[j]));
-    }
-    const float spacing = std::sqrt(3.14159265f / static_cast<float>(n));
-    std::printf("[ measure  ] poisson_disk(%d): closest pair %.3f (%.2f x sqrt(pi / n))\n", n, closest,
-                closest / spacing);
-    EXPECT_GT(closest, 0.5f * spacing) << n;
   }
 }
 

@@ -20,7 +20,7 @@
 // trust a; with the rule above the true edge is kept (boundary_shift = 0), the paper's shift is
 // a parameter.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "../../../passes/common/shadow_common.glsl"
+#include "common/shadow_common.glsl"
 #include "esm_common.glsl"
 #include "esm_views.glsl"
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;

@@ -3,9 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
-#include "techniques/mpg/passes/poisson_disk.h"
+#include "passes/sampling/poisson_disk.h"
 
 namespace penumbra::mpg {
+
+const std::vector<glm::vec2>& poisson_points() {
+  static const std::vector<glm::vec2> points =
+      passes::poisson_disk(kMaxPoissonPoints, {.seed = 0x9E3779B9u, .domain = passes::SampleDomain::square,
+                                               .candidates_per_point = 32, .first_at_origin = true});
+  return points;
+}
 
 int pass_kernel_size(bool progressive, int iteration, int max_kernel) {
   if (!progressive) return max_kernel;
@@ -26,7 +33,7 @@ std::vector<Tap> kernel_taps(KernelSampling sampling, int count, int size) {
       for (int x = -r; x <= r; ++x) taps.push_back({glm::vec2(x, y), 0.0f});
   } else {
     const int n = std::clamp(count, 1, kMaxPoissonPoints);
-    for (int i = 0; i < n; ++i) taps.push_back({poisson_disk()[static_cast<size_t>(i)] * half, 0.0f});
+    for (int i = 0; i < n; ++i) taps.push_back({poisson_points()[static_cast<size_t>(i)] * half, 0.0f});
   }
   double sum = 0.0;
   for (Tap& t : taps) sum += t.weight = gaussian_weight(t.offset, size);

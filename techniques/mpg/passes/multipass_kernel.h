@@ -17,6 +17,13 @@ struct Tap {
 
 enum class KernelSampling { poisson, dense };
 
+// The precomputed 2D Poisson disk of section 3.1: 64 points in [-1, 1]^2, the first fixed at the
+// origin "so the center texel is always examined", the rest a best-candidate sequence
+// (passes/sampling/poisson_disk.h) whose every prefix is well spread, as taking "the first N"
+// needs. Generated once, from a fixed seed.
+inline constexpr int kMaxPoissonPoints = 64;
+const std::vector<glm::vec2>& poisson_points();
+
 // Kernel size (pixels, odd) of blur pass `iteration` (0-based). Fixed: max_kernel every pass.
 // Progressive: 3x3 on the first pass, two pixels wider each pass (one each side) up to
 // max_kernel (section 3.1; Figure 5G: 3x3 up to 19x19 in 10 passes).
@@ -26,7 +33,7 @@ int pass_kernel_size(bool progressive, int iteration, int max_kernel);
 // "3-sigma rule"), unnormalised.
 float gaussian_weight(glm::vec2 offset_px, int size);
 
-// Poisson: the first `count` points of poisson_disk() (1..64), scaled by (size - 1) / 2 pixels
+// Poisson: the first `count` points of poisson_points() (1..64), scaled by (size - 1) / 2 pixels
 // so that [-1, 1] spans the kernel's outer texel centres (Figure 6A: size 3, points -1..+1),
 // with normalised Gaussian weights. Dense: every texel of the size x size kernel, the "entire
 // Gaussian" of Figure 7 (size^2 taps), weights normalised the same way.

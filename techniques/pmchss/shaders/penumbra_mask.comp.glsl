@@ -20,9 +20,9 @@
 // view of the average blocker window depth (1 = no blocker) instead of the penumbra.
 #define REGION 32
 layout(local_size_x = REGION, local_size_y = REGION) in;
-#include "shadow_common.glsl"
-#include "noise.glsl"
-#include "receiver_plane.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
+#include "common/receiver_plane.glsl"
 #define PENUMBRA_MASK_SEARCH 1
 #include "pmchss_common.glsl"
 

@@ -1,5 +1,6 @@
 // Shared pieces of the pmchss passes (Sterna 2018, "Contact-hardening Soft Shadows Made Fast").
-// Needs: shadow_common.glsl, noise.glsl, receiver_plane.glsl included first.
+// Needs: common/shadow_common.glsl, sampling/sampling.glsl, common/receiver_plane.glsl included
+// first.
 //
 // Depth domains: the shadow map holds the light's WINDOW depth in [0, 1]; comparisons happen
 // there (with bias). The penumbra mapping works on light-VIEW distances in world units
@@ -13,15 +14,13 @@ uniform float u_penumbra_k;              // Listing 4's 80
 uniform float u_depth_bias;              // window depth units
 uniform int u_receiver_plane;            // 1: tilt comparisons along the receiver plane
 
-const float kTwoPi = 6.28318530718;
-
 // Rotation phi of the Vogel disk for a full-resolution pixel (section 1.2: phi = 2 pi IGN).
 // Checkerboard mode multiplies y by 4 (section 3, Listing 7): with only every other pixel
 // computed, the unmodified noise "looked less random".
 float pmchss_noise_phi(ivec2 pixel, bool checker) {
   vec2 centre = vec2(pixel) + 0.5;
   if (checker) centre.y *= 4.0;
-  return kTwoPi * interleaved_gradient_noise(centre);
+  return noise_rotation(centre);
 }
 
 // Receiver depth compared against a tap at uv offset `o`: the receiver plane's depth there

@@ -10,9 +10,9 @@
 // (2cx + 1, 2cy + 1) in .g, i.e. the same texel count x channels as the paper's half-width
 // R target (the graph's size expressions have no half-width form).
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "shadow_common.glsl"
-#include "noise.glsl"
-#include "receiver_plane.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
+#include "common/receiver_plane.glsl"
 #include "pmchss_common.glsl"
 
 #ifdef CHECKER

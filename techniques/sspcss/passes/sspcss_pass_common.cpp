@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "passes/common/shadow_uniforms.h"
-#include "techniques/sspcss/passes/poisson_disk.h"
 
 namespace penumbra::sspcss {
 
@@ -89,7 +88,7 @@ void set_poisson_uniforms(const gl::Program& p, exec::PassContext& ctx, std::vec
   // kMaxPoissonTaps in poisson_taps.glsl; the declared range of poisson_taps keeps within it.
   constexpr int kMaxTaps = 64;
   const int taps = std::clamp(ctx.integer("poisson_taps"), 1, kMaxTaps);
-  if (static_cast<int>(disk.size()) != taps) disk = poisson_disk(taps);
+  if (static_cast<int>(disk.size()) != taps) disk = passes::poisson_disk(taps, kPoissonDisk);
   glProgramUniform2fv(p.id(), p.uniform_location("u_poisson"), taps, &disk[0].x);
   p.set("u_poisson_taps", taps);
 }

@@ -9,6 +9,7 @@
 
 #include "exec/pass.h"
 #include "graph/parameters.h"
+#include "passes/sampling/poisson_disk.h"
 
 namespace penumbra::sspcss {
 
@@ -36,6 +37,11 @@ void set_penumbra_uniforms(const gl::Program& program, exec::PassContext& ctx);
 void set_fixed_radius_uniform(const gl::Program& program, exec::PassContext& ctx);
 // u_taps from separable_taps.
 void set_separable_uniforms(const gl::Program& program, exec::PassContext& ctx);
+// The 2D Poisson disk of the Poisson filter (section 2: "a 2D random Poisson disk as the domain
+// filter"): the first poisson_taps points of this sequence in the unit disk, rotated per pixel in
+// the shader (poisson_taps.glsl). The seed is fixed so images and tests are reproducible.
+inline constexpr passes::PoissonDiskOptions kPoissonDisk{.seed = 0x2545F491u};
+
 // u_poisson[], u_poisson_taps from poisson_taps; `disk` caches the pass's point set (regenerated
 // when the tap count changes).
 void set_poisson_uniforms(const gl::Program& program, exec::PassContext& ctx, std::vector<glm::vec2>& disk);

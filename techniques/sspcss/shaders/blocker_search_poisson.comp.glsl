@@ -9,8 +9,8 @@
 //            max_penumbra_px
 // The centre pixel is always a tap (the disk set need not hold the centre).
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "shadow_common.glsl"
-#include "noise.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"
 #include "range_term.glsl"
 #include "receiver_footprint.glsl"

@@ -9,8 +9,8 @@
 //   g  blocker coverage: their weight / the weight of every tap (in [0, 1])
 //   b  the pixel's view depth (world units; 0 = background), for the next pass's range term
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "shadow_common.glsl"
-#include "noise.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"
 #include "range_term.glsl"
 #include "receiver_footprint.glsl"

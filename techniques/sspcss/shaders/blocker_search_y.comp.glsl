@@ -7,8 +7,8 @@
 //   penumbra W_screen, the shadow filter's diameter in pixels (0 = no blocker: the pixel keeps
 //            its hard visibility), clamped to max_penumbra_px
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "shadow_common.glsl"
-#include "noise.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"
 #include "range_term.glsl"
 #include "receiver_footprint.glsl"

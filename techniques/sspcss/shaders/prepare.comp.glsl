@@ -14,8 +14,8 @@
 // Background pixels and pixels outside the light frustum are lit. No NDC depth leaves this pass:
 // the shadow map's window depth is turned into a light distance here.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "shadow_common.glsl"
-#include "../../../passes/pcf_mask/shadow_taps.glsl"
+#include "common/shadow_common.glsl"
+#include "pcf_mask/shadow_taps.glsl"
 #include "screen_geometry.glsl"
 
 layout(rgba32f, binding = 0) uniform writeonly image2D u_projected;

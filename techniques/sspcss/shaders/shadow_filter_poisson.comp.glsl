@@ -5,8 +5,8 @@
 // shadow mask (1 = lit, 0 = umbra). The centre pixel is always a tap. Background: 1. A receiver
 // facing away from the light: 0 (its own shadow). W_screen = 0: the hard visibility.
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "shadow_common.glsl"
-#include "noise.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"
 #include "range_term.glsl"
 #include "receiver_footprint.glsl"

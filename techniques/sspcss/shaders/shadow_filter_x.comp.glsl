@@ -9,8 +9,8 @@
 //      crosses a depth edge counts less in the column pass, as its taps would in a 2D filter
 //   b  the pixel's view depth (world units; 0 = background), the next pass's range term input
 layout(local_size_x = 8, local_size_y = 8) in;
-#include "shadow_common.glsl"
-#include "noise.glsl"
+#include "common/shadow_common.glsl"
+#include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"
 #include "range_term.glsl"
 #include "receiver_footprint.glsl"
