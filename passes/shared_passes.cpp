@@ -21,7 +21,7 @@ void register_shared_passes(exec::PassLibrary& library) {
   library.add(passes::visualize_pass_type());
 }
 
-exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry) {
+exec::PassLibrary make_pass_library(const technique::TechniqueRegistry& registry) {
   exec::PassLibrary library;
   register_shared_passes(library);
   registry.register_passes(library);

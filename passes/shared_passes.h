@@ -1,7 +1,7 @@
 #pragma once
 // The pass types every frame and most techniques use (one folder each under passes/).
 #include "exec/pass.h"
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 namespace penumbra {
 
@@ -9,6 +9,6 @@ void register_shared_passes(exec::PassLibrary& library);
 
 // The pass library a session runs on: the shared passes plus every registered technique's own
 // pass types (built-ins and plugins alike).
-exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry);
+exec::PassLibrary make_pass_library(const technique::TechniqueRegistry& registry);
 
 }  // namespace penumbra

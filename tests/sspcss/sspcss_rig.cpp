@@ -12,7 +12,7 @@
 
 namespace penumbra::test {
 
-metrics::MaskImage read_resource(plugin::TechniqueSession& session, const std::string& name, int channel) {
+metrics::MaskImage read_resource(technique::TechniqueSession& session, const std::string& name, int channel) {
   gl::Texture* t = session.executor().resource(name);
   if (!t) return {};
   std::vector<float> texels = t->read();  // rows bottom to top

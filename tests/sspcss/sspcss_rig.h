@@ -14,7 +14,7 @@ namespace penumbra::test {
 
 // First channel of a resource of the last rendered frame (rows top to bottom); `channel` picks
 // another one. Empty when the frame has no such resource.
-metrics::MaskImage read_resource(plugin::TechniqueSession& session, const std::string& name, int channel = 0);
+metrics::MaskImage read_resource(technique::TechniqueSession& session, const std::string& name, int channel = 0);
 
 // Exact area-light visibility (Embree, 256 light samples) for the frame's G-buffer.
 metrics::MaskImage trace_reference(const scene::Scene& scene, const RenderedFrame& frame);
