@@ -29,8 +29,8 @@ Agreement raster_vs_raytraced(const std::string& scene) {
   r.set("map_size=2048");  // 1024 passes too on ball (0.0017) but leaves fence at 0.009
   r.set("maps_per_frame=64");
   r.render(4);
-  ASSERT_TRUE(r.session().progress().has_value()) << "the raster reference reported no progress";
-  const exec::PassProgress p = *r.session().progress();
+  EXPECT_TRUE(r.session().progress().has_value()) << "the raster reference reported no progress";
+  const exec::PassProgress p = r.session().progress().value_or(exec::PassProgress{});
   EXPECT_EQ(p.label, "raster");
   EXPECT_EQ(p.done, 256);
   EXPECT_TRUE(p.complete());
