@@ -21,16 +21,16 @@ void register_shared_passes(exec::PassLibrary& library) {
   library.add(passes::visualize_pass_type());
 }
 
-exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry) {
+exec::PassLibrary make_pass_library(const technique::TechniqueRegistry& registry) {
   exec::PassLibrary library;
   register_shared_passes(library);
   registry.register_passes(library);
   return library;
 }
 
-Result<graph::GraphDesc> load_technique_graph(const plugin::TechniqueRegistry& registry,
-                                              const plugin::Technique& technique) {
-  return plugin::load_technique_graph(technique, make_pass_library(registry).declarations());
+Result<graph::GraphDesc> load_technique_graph(const technique::TechniqueRegistry& registry,
+                                              const technique::Technique& technique) {
+  return technique::load_technique_graph(technique, make_pass_library(registry).declarations());
 }
 
 }  // namespace penumbra

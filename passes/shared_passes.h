@@ -1,7 +1,7 @@
 #pragma once
 // The pass types every frame and most techniques use (one folder each under passes/).
 #include "exec/pass.h"
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 namespace penumbra {
 
@@ -9,11 +9,11 @@ void register_shared_passes(exec::PassLibrary& library);
 
 // The pass library a session runs on: the shared passes plus every registered technique's own
 // pass types (built-ins and plugins alike).
-exec::PassLibrary make_pass_library(const plugin::TechniqueRegistry& registry);
+exec::PassLibrary make_pass_library(const technique::TechniqueRegistry& registry);
 
-// plugin::load_technique_graph with the pass types of make_pass_library(registry): a technique's
+// technique::load_technique_graph with the pass types of make_pass_library(registry): a technique's
 // graph with its exposed parameters described, for code that has a registry but no library.
-Result<graph::GraphDesc> load_technique_graph(const plugin::TechniqueRegistry& registry,
-                                              const plugin::Technique& technique);
+Result<graph::GraphDesc> load_technique_graph(const technique::TechniqueRegistry& registry,
+                                              const technique::Technique& technique);
 
 }  // namespace penumbra

@@ -6,11 +6,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)"
-bin=build/release/sandbox
+build=build/release
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-  exec "$bin/penumbra-sandbox" --scene showcase "$@"
+  exec "$build/sandbox/penumbra-sandbox" --scene showcase "$@"
 fi
 echo "no display: rendering the showcase scene headless into out/ (the sandbox needs a display)"
-"$bin/penumbra" info
-"$bin/penumbra" render --scene showcase --all-techniques --out-dir out --set method=raytraced "$@"
+"$build/cli/penumbra" info
+"$build/cli/penumbra" render --scene showcase --all-techniques --out-dir out --set method=raytraced "$@"
 ls out/

@@ -11,7 +11,7 @@
 
 namespace penumbra {
 
-void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
+void register_builtin_techniques(technique::TechniqueRegistry& registry) {
   // Each technique folder adds one line here.
   baseline::register_techniques(registry);
   esm::register_technique(registry);
@@ -21,7 +21,7 @@ void register_builtin_techniques(plugin::TechniqueRegistry& registry) {
   sspcss::register_technique(registry);
 }
 
-Status register_all_techniques(plugin::TechniqueRegistry& registry, const std::vector<std::string>& plugin_dirs) {
+Status register_all_techniques(technique::TechniqueRegistry& registry, const std::vector<std::string>& plugin_dirs) {
   register_builtin_techniques(registry);
   if (Result<int> loaded = plugin::load_plugins(plugin_dirs, registry); !loaded) return loaded.error();
   return {};

@@ -13,7 +13,7 @@
 namespace penumbra::test {
 
 struct TechniqueRig::State {
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   exec::PassLibrary library;
 };
 
@@ -24,7 +24,7 @@ TechniqueRig::TechniqueRig(RigOptions options)
   if (Result<int> loaded = plugin::load_plugins(options.plugin_dirs, state_->registry); !loaded)
     ADD_FAILURE() << loaded.error().to_string();
   state_->library = make_pass_library(state_->registry);
-  session_ = std::make_unique<plugin::TechniqueSession>(state_->registry, state_->library);
+  session_ = std::make_unique<technique::TechniqueSession>(state_->registry, state_->library);
   session_->compile_options().keep_alive = {"gbuffer_position", "gbuffer_normal"};
   for (std::string& r : options.keep_alive) session_->compile_options().keep_alive.push_back(std::move(r));
   resize(options.width, options.height);
@@ -33,7 +33,7 @@ TechniqueRig::TechniqueRig(RigOptions options)
 
 TechniqueRig::~TechniqueRig() = default;
 
-const plugin::TechniqueRegistry& TechniqueRig::registry() const { return state_->registry; }
+const technique::TechniqueRegistry& TechniqueRig::registry() const { return state_->registry; }
 
 void TechniqueRig::set_scene(const scene::Scene& scene) {
   session_->set_scene(scene);

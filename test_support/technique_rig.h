@@ -1,7 +1,7 @@
 #pragma once
 // The generic technique rig: scene + technique + settings + frame -> the shadow mask and any
 // resource of that frame, read back as CPU images (rows top to bottom, read_back.h). It owns a
-// technique registry, the pass library and one plugin::TechniqueSession on the test GL context
+// technique registry, the pass library and one technique::TechniqueSession on the test GL context
 // (gl_context.h); every failure fails the current test with the error's text.
 //
 //   TechniqueRig rig({.width = 160, .height = 120, .technique = "vsm",
@@ -22,7 +22,7 @@
 #include <glm/glm.hpp>
 
 #include "metrics/mask_image.h"
-#include "plugin/technique_session.h"
+#include "technique/technique_session.h"
 #include "scene/scene.h"
 #include "test_support/read_back.h"
 
@@ -35,7 +35,7 @@ struct RigOptions {
   std::string technique;
   // The techniques the rig can run: none unless given. A plugin's tests pass its register
   // function; the repository's tests pass register_builtin_techniques.
-  std::function<void(plugin::TechniqueRegistry&)> techniques;
+  std::function<void(technique::TechniqueRegistry&)> techniques;
   // Plugin directories loaded after `techniques` (plugin::load_plugins: --plugin-dir's rules).
   std::vector<std::string> plugin_dirs;
   // Resources kept alive for read() besides the outputs and gbuffer_position/gbuffer_normal
@@ -60,8 +60,8 @@ class TechniqueRig {
   explicit TechniqueRig(RigOptions options = {});
   ~TechniqueRig();
 
-  plugin::TechniqueSession& session() { return *session_; }
-  const plugin::TechniqueRegistry& registry() const;
+  technique::TechniqueSession& session() { return *session_; }
+  const technique::TechniqueRegistry& registry() const;
 
   // Uploads the scene (camera and light reset to the scene's); selects options.technique if no
   // technique is selected yet.
@@ -102,7 +102,7 @@ class TechniqueRig {
  private:
   struct State;
   std::unique_ptr<State> state_;
-  std::unique_ptr<plugin::TechniqueSession> session_;
+  std::unique_ptr<technique::TechniqueSession> session_;
   std::string technique_;
 };
 

@@ -59,6 +59,7 @@ Status Executor::set_plan(graph::CompiledPlan plan) {
   for (const graph::PlannedPass& p : plan_.passes) names.push_back(p.name);
   timer_.reset(names, TimingMode::off);  // decided on first execute, when GL info is known
   has_plan_ = true;
+  progress_.reset();  // the new plan's passes start their work afresh
   return {};
 }
 
@@ -88,7 +89,7 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
   for (size_t i = 0; i < plan_.passes.size(); ++i) {
     const graph::PlannedPass& pass = plan_.passes[i];
     if (pass.barriers) glMemoryBarrier(gl_barrier_bits(pass.barriers));
-    PassContext ctx(pass, params, frame, shaders_, texture_of, buffer_of);
+    PassContext ctx(pass, params, frame, shaders_, texture_of, buffer_of, &progress_);
     timer_.begin_pass(i);
     Status s;
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, pass.name.c_str());

@@ -59,6 +59,8 @@ class Executor {
   void flush_timings() { timer_.flush(); }
   TimingMode timing_mode() const { return timer_.mode(); }
   std::uint32_t frames_executed() const { return frames_; }
+  // The last progress a pass of this plan reported (exec/pass_progress.h); none before one did.
+  const std::optional<PassProgress>& progress() const { return progress_; }
 
  private:
   const PassLibrary& library_;
@@ -72,6 +74,7 @@ class Executor {
   std::vector<gl::Buffer*> buffers_;    // by physical id
   PassTimer timer_;
   std::uint32_t frames_ = 0;
+  std::optional<PassProgress> progress_;
 };
 
 GLbitfield gl_barrier_bits(std::uint32_t graph_bits);

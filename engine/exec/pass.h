@@ -22,10 +22,12 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "exec/frame_inputs.h"
+#include "exec/pass_progress.h"
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/texture.h"
@@ -41,9 +43,9 @@ class PassContext {
  public:
   PassContext(const graph::PlannedPass& pass, const graph::ParameterSet& params, const FrameInputs& frame,
               ShaderCache& shaders, std::function<gl::Texture*(int)> textures,
-              std::function<gl::Buffer*(int)> buffers)
+              std::function<gl::Buffer*(int)> buffers, std::optional<PassProgress>* progress)
       : pass_(pass), params_(params), frame_(frame), shaders_(shaders),
-        textures_(std::move(textures)), buffers_(std::move(buffers)) {}
+        textures_(std::move(textures)), buffers_(std::move(buffers)), progress_(progress) {}
 
   const graph::PlannedPass& pass() const { return pass_; }
   const FrameInputs& frame() const { return frame_; }
@@ -77,6 +79,11 @@ class PassContext {
   // workgroup is larger than the block it writes (it also computes a halo around it).
   void dispatch_tiles(const gl::ShaderProgram& p, int width, int height, int tile) const;
 
+  // A progressive pass's progress (exec/pass_progress.h); the executor keeps the last report.
+  void report_progress(PassProgress progress) const {
+    if (progress_) *progress_ = std::move(progress);
+  }
+
  private:
   const graph::PlannedBinding* find(std::string_view slot) const;
   const graph::ParamValue& value(std::string_view name) const;
@@ -87,6 +94,7 @@ class PassContext {
   ShaderCache& shaders_;
   std::function<gl::Texture*(int)> textures_;
   std::function<gl::Buffer*(int)> buffers_;
+  std::optional<PassProgress>* progress_;
   GLuint next_unit_ = 0;
 };
 

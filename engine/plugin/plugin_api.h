@@ -6,17 +6,17 @@
 //
 // defines the two extern "C" entry points the host looks up:
 //   int  penumbra_plugin_abi_version()   the PENUMBRA_PLUGIN_ABI_VERSION it was compiled against
-//   void penumbra_register_plugin(penumbra::plugin::TechniqueRegistry&)   adds its techniques
+//   void penumbra_register_plugin(penumbra::technique::TechniqueRegistry&)   adds its techniques
 // The host calls the second only when the first returns its own version
 // (plugin/plugin_library.h); a library without them, or of another version, is refused with a
 // message naming the file and both versions.
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 // The plugin ABI: the C++ types a plugin and libpenumbra exchange (TechniqueRegistry, Technique,
 // PassLibrary, PassType, PassImpl, PassContext and what they hold). Bump it with any change to
 // their layout, to a virtual function or to a signature a plugin may call; a plugin built
 // against another value is refused instead of crashing inside mismatched code.
-#define PENUMBRA_PLUGIN_ABI_VERSION 1
+#define PENUMBRA_PLUGIN_ABI_VERSION 2
 
 namespace penumbra::plugin {
 
@@ -25,7 +25,7 @@ inline constexpr const char* kPluginAbiVersionSymbol = "penumbra_plugin_abi_vers
 inline constexpr const char* kPluginRegisterSymbol = "penumbra_register_plugin";
 
 using PluginAbiVersionFn = int (*)();
-using PluginRegisterFn = void (*)(TechniqueRegistry&);
+using PluginRegisterFn = void (*)(technique::TechniqueRegistry&);
 
 }  // namespace penumbra::plugin
 
@@ -34,6 +34,6 @@ using PluginRegisterFn = void (*)(TechniqueRegistry&);
     return PENUMBRA_PLUGIN_ABI_VERSION;                                                          \
   }                                                                                              \
   extern "C" __attribute__((visibility("default"))) void penumbra_register_plugin(             \
-      ::penumbra::plugin::TechniqueRegistry& registry) {                                         \
+      ::penumbra::technique::TechniqueRegistry& registry) {                                         \
     register_fn(registry);                                                                       \
   }

@@ -46,7 +46,7 @@ Result<PluginLibrary> PluginLibrary::open(const fs::path& file, const fs::path& 
   return PluginLibrary(std::move(library), shown, register_fn);
 }
 
-void PluginLibrary::register_into(TechniqueRegistry& registry) const { register_fn_(registry); }
+void PluginLibrary::register_into(technique::TechniqueRegistry& registry) const { register_fn_(registry); }
 
 Result<std::vector<fs::path>> scan_plugin_directory(const std::string& dir) {
   std::error_code ec;
@@ -74,7 +74,7 @@ std::vector<std::string> plugin_search_path(const std::vector<std::string>& dirs
   return out;
 }
 
-Result<int> load_plugin_directory(const std::string& dir, TechniqueRegistry& registry) {
+Result<int> load_plugin_directory(const std::string& dir, technique::TechniqueRegistry& registry) {
   auto files = scan_plugin_directory(dir);
   if (!files) return files.error();
   int loaded = 0;
@@ -89,7 +89,7 @@ Result<int> load_plugin_directory(const std::string& dir, TechniqueRegistry& reg
   return loaded;
 }
 
-Result<int> load_plugins(const std::vector<std::string>& dirs, TechniqueRegistry& registry) {
+Result<int> load_plugins(const std::vector<std::string>& dirs, technique::TechniqueRegistry& registry) {
   int loaded = 0;
   for (const std::string& dir : plugin_search_path(dirs)) {
     auto n = load_plugin_directory(dir, registry);

@@ -4,7 +4,7 @@
 // A plugin's graph JSON and shaders lie beside its .so: loading a directory makes it a shader
 // root (gl/shader_files.h), so the host never needs the plugin's sources.
 //
-//   plugin::TechniqueRegistry registry;
+//   technique::TechniqueRegistry registry;
 //   register_builtin_techniques(registry);
 //   if (Result<int> n = plugin::load_plugins({"build/plugins"}, registry); !n) fail(n.error());
 #include <filesystem>
@@ -13,14 +13,14 @@
 
 #include "gl/dynamic_library.h"
 #include "plugin/plugin_api.h"
-#include "plugin/technique.h"
+#include "technique/technique.h"
 #include "util/error.h"
 
 namespace penumbra::plugin {
 
 // One opened plugin. Move-only; destroying it unloads the code, so whatever the plugin
 // registered (its techniques, its pass types in a PassLibrary, pass objects in an executor)
-// must be gone first, as the sandbox's reload does (sandbox/app/plugin_reload.h).
+// must be gone first, as the sandbox's reload does (sandbox/plugin_reload.h).
 class PluginLibrary {
  public:
   // Opens `file` and checks it: both entry points present, ABI version equal to this
@@ -31,7 +31,7 @@ class PluginLibrary {
                                     const std::filesystem::path& shown_as = {});
 
   // Calls the plugin's penumbra_register_plugin(registry).
-  void register_into(TechniqueRegistry& registry) const;
+  void register_into(technique::TechniqueRegistry& registry) const;
   const std::filesystem::path& file() const { return file_; }
 
  private:
@@ -54,9 +54,9 @@ std::vector<std::string> plugin_search_path(const std::vector<std::string>& dirs
 // Loads every plugin of scan_plugin_directory(dir) into `registry`, in file-name order. The
 // libraries stay loaded until the process exits. Returns how many loaded; stops at
 // the first refusal.
-Result<int> load_plugin_directory(const std::string& dir, TechniqueRegistry& registry);
+Result<int> load_plugin_directory(const std::string& dir, technique::TechniqueRegistry& registry);
 
 // load_plugin_directory() over plugin_search_path(dirs); returns how many loaded in all.
-Result<int> load_plugins(const std::vector<std::string>& dirs, TechniqueRegistry& registry);
+Result<int> load_plugins(const std::vector<std::string>& dirs, technique::TechniqueRegistry& registry);
 
 }  // namespace penumbra::plugin

@@ -65,7 +65,7 @@ penumbra::exec::PassType mask_pass_type() {
       .build<MaskPass>();
 }
 
-void register_technique(penumbra::plugin::TechniqueRegistry& registry) {
+void register_technique(penumbra::technique::TechniqueRegistry& registry) {
   registry.add({.name = "vsm",
                 .graph_file = "vsm/vsm.json",
                 .register_passes = [](penumbra::exec::PassLibrary& library) {

@@ -3,7 +3,7 @@
 // map's light distances and their squares are box-filtered, and a receiver's visibility is the
 // one-sided Chebyshev bound P(x >= t) <= s^2 / (s^2 + (t - mean)^2).
 #include "exec/pass.h"
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 namespace vsm {
 
@@ -14,6 +14,6 @@ penumbra::exec::PassType moments_pass_type();
 penumbra::exec::PassType mask_pass_type();
 
 // Adds technique "vsm" (graph vsm/vsm.json, found beside the plugin's .so) and both pass types.
-void register_technique(penumbra::plugin::TechniqueRegistry& registry);
+void register_technique(penumbra::technique::TechniqueRegistry& registry);
 
 }  // namespace vsm

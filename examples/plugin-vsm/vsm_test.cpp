@@ -53,7 +53,7 @@ penumbra::metrics::MaskImage mask_over_moments(float mean) {
   TextureImage moments{shadow, shadow, 2, {}};
   for (int i = 0; i < shadow * shadow; ++i) moments.texels.insert(moments.texels.end(), {mean, mean * mean});
   TechniqueRig rig({.width = 64, .height = 48, .shadow_size = shadow, .technique = "vsm_known_moments",
-                    .techniques = [&](penumbra::plugin::TechniqueRegistry& registry) {
+                    .techniques = [&](penumbra::technique::TechniqueRegistry& registry) {
                       penumbra::gl::ShaderFileSystem::default_instance().add_root(VSM_TEST_DIR);
                       registry.add({.name = "vsm_known_moments",
                                     .graph_file = "known_moments.json",

@@ -1,4 +1,4 @@
-// G-buffer pre-pass: the frame's first pass (plugin/frame_graph.h). A raster pass: depth,
+// G-buffer pre-pass: the frame's first pass (technique/frame_graph.h). A raster pass: depth,
 // world normal, world position with linear view depth, and base colour for the lighting pass.
 #include "passes/gbuffer/gbuffer_pass.h"
 

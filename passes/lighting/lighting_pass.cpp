@@ -1,4 +1,4 @@
-// The frame's last pass (plugin/frame_graph.h): lights the G-buffer with the technique's
+// The frame's last pass (technique/frame_graph.h): lights the G-buffer with the technique's
 // shadow_mask. Compute, one thread per pixel.
 #include "passes/lighting/lighting_pass.h"
 

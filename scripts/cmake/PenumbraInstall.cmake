@@ -10,7 +10,7 @@
 #   bin/penumbra, bin/penumbra-sandbox        run against lib/ ($ORIGIN/../lib)
 #   lib/libpenumbra.so.0                      Penumbra::engine (and Penumbra::passes)
 #   lib/libpenumbra_test_support.a            Penumbra::test_support
-#   include/penumbra/{gl,graph,exec,plugin,scene,metrics,util}/  engine headers
+#   include/penumbra/{gl,graph,exec,technique,plugin,scene,metrics,util}/  engine headers
 #   include/penumbra/{passes,test_support}/   pass and test support headers
 #   include/penumbra/{glad,KHR}/              the GL loader this libpenumbra was built with
 #   share/penumbra/shaders/                   passes/**.glsl and engine/gl/shaders (also
@@ -47,7 +47,7 @@ endif()
 set_target_properties(${executables} PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
 install(TARGETS ${executables} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-# Headers keep their include paths: "plugin/plugin_api.h", "passes/common/shadow_uniforms.h".
+# Headers keep their include paths: "technique/technique.h", "passes/common/shadow_uniforms.h".
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/ DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/passes DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}

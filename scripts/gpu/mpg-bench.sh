@@ -15,7 +15,7 @@
 # separate commands (SIZES=...) with the same OUT_DIR if one command must stay short, then
 #   python3 scripts/gpu/mpg_tables.py OUT_DIR > OUT_DIR/mpg.md
 # On llvmpipe (proves the script works; the numbers say nothing about a GPU):
-#   CONTEXT=osmesa SIZES=160x90:512 FRAMES=3 WARMUP=1 scripts/gpu/mpg-bench.sh build/dev/sandbox/penumbra /tmp/mpg-bench
+#   CONTEXT=osmesa SIZES=160x90:512 FRAMES=3 WARMUP=1 scripts/gpu/mpg-bench.sh build/dev/cli/penumbra /tmp/mpg-bench
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 bin="${1:?usage: mpg-bench.sh PENUMBRA_BINARY OUT_DIR}"

@@ -11,7 +11,7 @@
 # (a proof that it works; the numbers say nothing about ratios): SIZE=320x180 CONTEXT=osmesa.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-bin="${1:-$here/../../build/release/sandbox/penumbra}"
+bin="${1:-$here/../../build/release/cli/penumbra}"
 out="${2:-pmchss-bench}"
 size="${SIZE:-1920x1080}"
 shadow="${SHADOW:-2048}"

@@ -20,13 +20,13 @@
 #        RADII="8 16 32" SIZE=1920x1080 (the screen of parts 1 and 3) SHADOW=2048 (parts 2 and 3)
 #
 # On the GPU machine (docs/gpu-machine.md): bundle here with
-#   scripts/gpu/bundle.sh .gpu build/release/sandbox/penumbra
+#   scripts/gpu/bundle.sh .gpu build/release/cli/penumbra
 # then, in a device run carrying .gpu (3 bench processes; a few minutes of device time at FRAMES=200):
 #   source .gpu/env.sh && scripts/gpu/sspcss-bench.sh .gpu/bin/penumbra $OUT/sspcss
 # Writes OUTDIR/*.json (one per bench run), OUTDIR/info.txt and OUTDIR/sspcss-bench.md.
 # A quick proof that it works on llvmpipe (numbers meaningless):
 #   CONTEXT=osmesa FRAMES=2 WARMUP=1 SIZE=160x90 SHADOW=256 SHADOW_SIZES="256 512" \
-#   SCREEN_SIZES="160x90 320x180" RADII="2 4" scripts/gpu/sspcss-bench.sh build/dev/sandbox/penumbra /tmp/sb
+#   SCREEN_SIZES="160x90 320x180" RADII="2 4" scripts/gpu/sspcss-bench.sh build/dev/cli/penumbra /tmp/sb
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 bin="${1:?usage: sspcss-bench.sh PENUMBRA_BINARY OUTDIR}"

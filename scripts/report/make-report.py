@@ -350,7 +350,7 @@ def main():
         progress(f"scene {s.title}")
     md += ["## Reproduce", "", "```",
            "cmake --preset release && cmake --build --preset release",
-           "scripts/gpu/bundle.sh .gpu build/release/sandbox/penumbra   # plus the models to carry",
+           "scripts/gpu/bundle.sh .gpu build/release/cli/penumbra   # plus the models to carry",
            "# on the GPU machine (docs/gpu-machine.md):",
            "source .gpu/env.sh",
            "COST=0 scripts/report/run-suite.sh .gpu/bin/penumbra OUT MODEL.gltf ...   # 6 min on an H100",

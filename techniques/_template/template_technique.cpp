@@ -41,7 +41,7 @@ exec::PassType template_mask_pass_type() {
       .build<TemplateMaskPass>();
 }
 
-void register_technique(plugin::TechniqueRegistry& registry) {
+void register_technique(technique::TechniqueRegistry& registry) {
   registry.add({.name = "template",
                 .graph_file = "techniques/_template/template.json",
                 .register_passes = [](exec::PassLibrary& library) { library.add(template_mask_pass_type()); }});

@@ -2,7 +2,7 @@
 // The template technique: its pass type and its registration. Rename `template` everywhere
 // (folder, JSON "name", pass type, namespace) when you copy this folder.
 #include "exec/pass.h"
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 namespace penumbra::template_technique {
 
@@ -10,6 +10,6 @@ namespace penumbra::template_technique {
 exec::PassType template_mask_pass_type();
 
 // Adds the technique (graph techniques/_template/template.json) and its pass type.
-void register_technique(plugin::TechniqueRegistry& registry);
+void register_technique(technique::TechniqueRegistry& registry);
 
 }  // namespace penumbra::template_technique

@@ -7,7 +7,7 @@
 
 namespace penumbra::baseline {
 
-void register_techniques(plugin::TechniqueRegistry& registry) {
+void register_techniques(technique::TechniqueRegistry& registry) {
   registry.add({.name = "hard",
                 .graph_file = "techniques/baseline/hard.json"});
   registry.add({.name = "pcf",

@@ -1,6 +1,6 @@
 #pragma once
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 namespace penumbra::baseline {
-void register_techniques(plugin::TechniqueRegistry& registry);
+void register_techniques(technique::TechniqueRegistry& registry);
 }

@@ -16,7 +16,7 @@ void register_passes(exec::PassLibrary& library) {
 }
 }  // namespace
 
-void register_technique(plugin::TechniqueRegistry& registry) {
+void register_technique(technique::TechniqueRegistry& registry) {
   registry.add({.name = "esm",
                 .graph_file = "techniques/esm/esm.json",
                 .register_passes = register_passes});

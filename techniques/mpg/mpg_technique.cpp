@@ -22,7 +22,7 @@ void register_passes(exec::PassLibrary& library) {
 }
 }  // namespace
 
-void register_technique(plugin::TechniqueRegistry& registry) {
+void register_technique(technique::TechniqueRegistry& registry) {
   registry.add({.name = "mpg",
                 .graph_file = "techniques/mpg/mpg.json",
                 .register_passes = register_passes});

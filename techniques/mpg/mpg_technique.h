@@ -1,7 +1,7 @@
 #pragma once
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 namespace penumbra::mpg {
 // Adds the "mpg" technique (graph techniques/mpg/mpg.json) and its pass types.
-void register_technique(plugin::TechniqueRegistry& registry);
+void register_technique(technique::TechniqueRegistry& registry);
 }  // namespace penumbra::mpg

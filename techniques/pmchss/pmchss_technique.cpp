@@ -17,7 +17,7 @@ void register_passes(exec::PassLibrary& library) {
 }
 }  // namespace
 
-void register_technique(plugin::TechniqueRegistry& registry) {
+void register_technique(technique::TechniqueRegistry& registry) {
   registry.add({.name = "pmchss",
                 .graph_file = "techniques/pmchss/pmchss.json",
                 .register_passes = register_passes});

@@ -11,7 +11,6 @@
 #include "exec/pass_decl_builder.h"
 #include "passes/shadow_map/shadow_map_pass.h"
 #include "graph/parameters.h"
-#include "reference_progress.h"
 #include "sample_view.h"
 
 namespace penumbra::reference {
@@ -45,7 +44,7 @@ class RasterReferencePass final : public exec::PassImpl {
     ReferenceFrameKey key = make_frame_key(frame, {double(samples), double(map_size), double(seed),
                                                    slope_bias, constant_bias, receiver_bias});
     if (!has_key_ || key != key_) {
-      if (has_key_) count_reference_reset();
+      if (has_key_) ++restarts_;
       key_ = std::move(key);
       has_key_ = true;
       done_ = 0;
@@ -99,7 +98,8 @@ class RasterReferencePass final : public exec::PassImpl {
     gl::Texture& mask = ctx.texture("mask");
     ctx.dispatch_over(resolve, mask.width(), mask.height());
 
-    publish_reference_progress("raster", done_, samples);
+    ctx.report_progress({.label = "raster", .unit = "shadow maps", .done = done_, .total = samples,
+                         .restarts = restarts_});
     return {};
   }
 
@@ -126,6 +126,7 @@ class RasterReferencePass final : public exec::PassImpl {
   ReferenceFrameKey key_;
   bool has_key_ = false;
   int done_ = 0;
+  std::uint64_t restarts_ = 0;
   std::vector<scene::LightSample> samples_;
 };
 

@@ -12,7 +12,6 @@
 #include "reference_frame_key.h"
 #include "exec/pass_decl_builder.h"
 #include "graph/parameters.h"
-#include "reference_progress.h"
 
 namespace penumbra::reference {
 namespace {
@@ -65,7 +64,7 @@ class RaytracedReferencePass final : public exec::PassImpl {
     gl::Texture& mask = ctx.texture("mask");
     ReferenceFrameKey key = make_frame_key(frame, {double(rays), double(seed), double(pixel_samples)});
     if (!has_key_ || key != key_ || result_.size() != static_cast<size_t>(mask.width()) * mask.height()) {
-      if (has_key_) count_reference_reset();
+      if (has_key_) ++restarts_;
       if (Status s = trace(ctx, rays, seed, pixel_samples); !s) return s;
       key_ = std::move(key);
       has_key_ = true;
@@ -104,8 +103,11 @@ class RaytracedReferencePass final : public exec::PassImpl {
     options.pixel_samples = pixel_samples;
     options.camera = ctx.frame().camera;
     options.rows_bottom_up = true;  // GL row order, see above
+    auto report = [&](std::int64_t done) {
+      ctx.report_progress({.label = "raytraced", .unit = "rays", .done = done, .total = total, .restarts = restarts_});
+    };
     options.progress = [&](float f) {
-      publish_reference_progress("raytraced", static_cast<std::int64_t>(f * static_cast<double>(total)), total);
+      report(static_cast<std::int64_t>(f * static_cast<double>(total)));
       // Progress lines only for long traces (a full-HD frame at M = 256), every ~10%.
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (f * 10.0f >= static_cast<float>(next_report) && f < 1.0f && elapsed > 2.0) {
@@ -115,7 +117,7 @@ class RaytracedReferencePass final : public exec::PassImpl {
     };
     metrics::MaskImage traced = trace_visibility(**rs, ctx.frame().light, positions, normals, w, h, options, coverage);
     result_ = std::move(traced.pixels);
-    publish_reference_progress("raytraced", total, total);
+    report(total);
     spdlog::info("reference: traced {}x{} ({} receivers x {} rays) in {:.2f} s", w, h, receivers, rays,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     return {};
@@ -123,6 +125,7 @@ class RaytracedReferencePass final : public exec::PassImpl {
 
   ReferenceFrameKey key_;
   bool has_key_ = false;
+  std::uint64_t restarts_ = 0;
   std::vector<float> result_;  // R32F texels, GL row order
 };
 

@@ -5,7 +5,7 @@
 
 namespace penumbra::reference {
 
-void register_techniques(plugin::TechniqueRegistry& registry) {
+void register_techniques(technique::TechniqueRegistry& registry) {
   registry.add({.name = "reference",
                 .graph_file = "techniques/reference/reference.json",
                 .register_passes = [](exec::PassLibrary& library) {

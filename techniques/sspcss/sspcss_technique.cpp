@@ -19,7 +19,7 @@ void register_passes(exec::PassLibrary& library) {
 }
 }  // namespace
 
-void register_technique(plugin::TechniqueRegistry& registry) {
+void register_technique(technique::TechniqueRegistry& registry) {
   registry.add({.name = "sspcss",
                 .graph_file = "techniques/sspcss/sspcss.json",
                 .register_passes = register_passes});

@@ -1,7 +1,7 @@
 #pragma once
-#include "plugin/technique.h"
+#include "technique/technique.h"
 
 namespace penumbra::sspcss {
 // Adds the "sspcss" technique (graph techniques/sspcss/sspcss.json) and its pass types.
-void register_technique(plugin::TechniqueRegistry& registry);
+void register_technique(technique::TechniqueRegistry& registry);
 }  // namespace penumbra::sspcss

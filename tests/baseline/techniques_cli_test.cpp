@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "plugin/technique.h"
+#include "technique/technique.h"
 #include "test_support/run_command.h"
 #include "techniques/builtin_techniques.h"
 
@@ -28,10 +28,10 @@ TEST(TechniquesCommand, JsonListsEveryParameterOfEveryTechnique) {
   ASSERT_FALSE(list.is_discarded()) << r.output;
   ASSERT_TRUE(list.is_array());
 
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   register_builtin_techniques(registry);
   ASSERT_EQ(list.size(), registry.all().size());
-  for (const plugin::Technique& t : registry.all()) {
+  for (const technique::Technique& t : registry.all()) {
     SCOPED_TRACE(t.name);
     auto it = std::find_if(list.begin(), list.end(), [&](const auto& j) { return j.value("name", "") == t.name; });
     ASSERT_NE(it, list.end());

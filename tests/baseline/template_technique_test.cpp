@@ -14,11 +14,11 @@ namespace {
 
 TEST(TemplateTechnique, CompilesAgainstThePassLibraryAndRenders) {
   gl_context();
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   register_builtin_techniques(registry);
   template_technique::register_technique(registry);
   exec::PassLibrary library = make_pass_library(registry);
-  plugin::TechniqueSession session(registry, library);
+  technique::TechniqueSession session(registry, library);
   session.set_scene(builtin_scene("ball"));
   ASSERT_TRUE(session.resize(128, 96));
   ASSERT_TRUE(session.set_shadow_size(1024));

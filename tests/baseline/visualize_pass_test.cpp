@@ -11,11 +11,11 @@ namespace {
 
 TEST(VisualizePass, HeatAndGreyMapsFollowTheInput) {
   gl_context();
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   register_builtin_techniques(registry);
   registry.add({.name = "visualize_test", .graph_file = "tests/baseline/visualize_graph.json"});
   exec::PassLibrary library = make_pass_library(registry);
-  plugin::TechniqueSession session(registry, library);
+  technique::TechniqueSession session(registry, library);
   session.set_scene(builtin_scene("ball"));
   ASSERT_TRUE(session.resize(96, 64));
   ASSERT_TRUE(session.set_shadow_size(512));

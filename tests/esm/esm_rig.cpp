@@ -25,7 +25,7 @@ metrics::MaskImage exact_hard_reference(TechniqueRig& rig, const scene::Scene& s
   reference::TraceOptions options{.samples = 1};
   options.pixel_samples = pixel_samples;
   options.camera = rig.session().camera();
-  const plugin::TechniqueSession& s = rig.session();
+  const technique::TechniqueSession& s = rig.session();
   return reference::trace_visibility(*rs, light, positions, normals, s.settings().screen_w, s.settings().screen_h,
                                      options, coverage);
 }

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "app/script.h"
+#include "sandbox/script.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   (void)penumbra::sandbox::parse_script(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");

@@ -17,9 +17,9 @@
 #include "graph/compiler.h"
 #include "graph/exposures.h"
 #include "graph/graph_json.h"
-#include "plugin/frame_graph.h"
-#include "plugin/preset.h"
-#include "plugin/technique_session.h"
+#include "technique/frame_graph.h"
+#include "technique/preset.h"
+#include "technique/technique_session.h"
 #include "techniques/_template/template_technique.h"
 #include "techniques/builtin_techniques.h"
 
@@ -34,7 +34,7 @@ std::string read_file(const std::string& path) {
 }
 
 struct Techniques {
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   exec::PassLibrary library;
   Techniques() {
     register_builtin_techniques(registry);
@@ -65,24 +65,24 @@ class TechniquePlan : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TechniquePlan, DefaultPlanMatchesGoldenDump) {
   const std::string name = GetParam();
-  const plugin::Technique* technique = techniques().registry.find(name);
+  const technique::Technique* technique = techniques().registry.find(name);
   ASSERT_NE(technique, nullptr) << name;
-  auto declared = plugin::load_technique_graph(*technique, techniques().library.declarations());
+  auto declared = technique::load_technique_graph(*technique, techniques().library.declarations());
   ASSERT_TRUE(declared) << declared.error().to_string() << "\n" << declared.error().details;
-  auto frame = plugin::compose_frame_graph(*declared);
+  auto frame = technique::compose_frame_graph(*declared);
   ASSERT_TRUE(frame) << frame.error().to_string();
   graph::ParameterSet params(frame->parameters);
   auto plan = graph::compile(*frame, techniques().library.declarations(), params, {1920, 1080, 2048});
-  ASSERT_TRUE(plan) << plugin::errors_to_error(plan.errors()).details;
+  ASSERT_TRUE(plan) << technique::errors_to_error(plan.errors()).details;
   expect_golden(graph::to_text(*plan), std::string(PENUMBRA_TEST_DATA_DIR) + "/golden/techniques/" + name + ".txt");
 }
 
 // Every value of every structural parameter, in every combination (int ranges of up to 16
 // values), compiles: a variant no default exercises cannot rot unseen.
 TEST_P(TechniquePlan, EveryStructuralCombinationCompiles) {
-  const plugin::Technique* technique = techniques().registry.find(GetParam());
+  const technique::Technique* technique = techniques().registry.find(GetParam());
   ASSERT_NE(technique, nullptr);
-  auto frame = plugin::compose_frame_graph(*plugin::load_technique_graph(*technique, techniques().library.declarations()));
+  auto frame = technique::compose_frame_graph(*technique::load_technique_graph(*technique, techniques().library.declarations()));
   ASSERT_TRUE(frame);
   std::vector<std::pair<std::string, std::vector<graph::ParamValue>>> axes;
   for (const graph::ParamDesc& d : frame->parameters) {
@@ -105,7 +105,7 @@ TEST_P(TechniquePlan, EveryStructuralCombinationCompiles) {
       combination += axes[a].first + "=" + graph::param_value_to_string(axes[a].second[index[a]]) + " ";
     }
     auto plan = graph::compile(*frame, techniques().library.declarations(), params, {640, 360, 1024});
-    ASSERT_TRUE(plan) << combination << "\n" << plugin::errors_to_error(plan.errors()).details;
+    ASSERT_TRUE(plan) << combination << "\n" << technique::errors_to_error(plan.errors()).details;
     more = false;
     for (size_t a = 0; a < axes.size() && !more; ++a) {
       if (++index[a] < axes[a].second.size()) more = true;
@@ -123,18 +123,18 @@ TEST_P(DocumentedExample, PlanMatchesGoldenDump) {
   const std::string name = GetParam();
   const std::string path = std::string(PENUMBRA_SOURCE_DIR) + "/docs/graph-examples/" + name + ".json";
   auto declared = graph::load_graph_json(path);
-  ASSERT_TRUE(declared) << plugin::errors_to_error(declared.errors()).details;
+  ASSERT_TRUE(declared) << technique::errors_to_error(declared.errors()).details;
   graph::GraphDesc desc = *declared;
   graph::GraphErrors unresolved = graph::resolve_exposures(desc, techniques().library.declarations());
-  ASSERT_TRUE(unresolved.empty()) << plugin::errors_to_error(unresolved).details;
-  if (plugin::reads_frame_resources(desc)) {
-    auto frame = plugin::compose_frame_graph(desc);
+  ASSERT_TRUE(unresolved.empty()) << technique::errors_to_error(unresolved).details;
+  if (technique::reads_frame_resources(desc)) {
+    auto frame = technique::compose_frame_graph(desc);
     ASSERT_TRUE(frame) << frame.error().to_string();
     desc = *frame;
   }
   graph::ParameterSet params(desc.parameters);
   auto plan = graph::compile(desc, techniques().library.declarations(), params, {1920, 1080, 2048});
-  ASSERT_TRUE(plan) << plugin::errors_to_error(plan.errors()).details;
+  ASSERT_TRUE(plan) << technique::errors_to_error(plan.errors()).details;
   expect_golden(graph::to_text(*plan), std::string(PENUMBRA_TEST_DATA_DIR) + "/golden/" + name + ".txt");
 }
 
@@ -151,7 +151,7 @@ TEST(OneDescription, NoTechniqueRepeatsADescriptionADefaultOrARange) {
     for (const graph::ParamDesc& d : types.find(type)->params) pass_descriptions.emplace(d.description, type + "." + d.name);
   std::map<std::string, std::string> stated;  // description -> "technique.param"
   int checked = 0;
-  for (const plugin::Technique& t : techniques().registry.all()) {
+  for (const technique::Technique& t : techniques().registry.all()) {
     // As written in the file: an exposing parameter's description is there only if it states one.
     auto raw = graph::load_graph_json(std::string(PENUMBRA_SOURCE_DIR) + "/" + t.graph_file);
     ASSERT_TRUE(raw) << t.graph_file;
@@ -164,7 +164,7 @@ TEST(OneDescription, NoTechniqueRepeatsADescriptionADefaultOrARange) {
         ADD_FAILURE() << who << " states the description of pass parameter " << p->second << "; expose it instead";
       ++checked;
     }
-    auto resolved = plugin::load_technique_graph(t, types);
+    auto resolved = technique::load_technique_graph(t, types);
     ASSERT_TRUE(resolved) << resolved.error().details;
     for (const graph::PassDecl& p : resolved->passes) {
       const graph::PassTypeDecl* type = types.find(p.type);
@@ -191,16 +191,16 @@ TEST(OneDescription, NoTechniqueRepeatsADescriptionADefaultOrARange) {
 // A technique parameter may not take the name of a frame pass's parameter: the frame's
 // lighting pass would look as if the technique set it.
 TEST(FrameParameters, ATechniqueParameterNamedLikeTheLightingPassesIsRefused) {
-  const plugin::Technique* hard = techniques().registry.find("hard");
+  const technique::Technique* hard = techniques().registry.find("hard");
   ASSERT_NE(hard, nullptr);
-  auto declared = plugin::load_technique_graph(*hard, techniques().library.declarations());
+  auto declared = technique::load_technique_graph(*hard, techniques().library.declarations());
   ASSERT_TRUE(declared);
   graph::GraphDesc desc = *declared;
   desc.source_file = "hard.json";
   graph::ParamDesc ambient = desc.parameters.front();
   ambient.name = "ambient";
   desc.parameters.push_back(ambient);
-  auto frame = plugin::compose_frame_graph(desc);
+  auto frame = technique::compose_frame_graph(desc);
   ASSERT_TRUE(frame) << frame.error().to_string();
   graph::ParameterSet params(frame->parameters);
   auto plan = graph::compile(*frame, techniques().library.declarations(), params, {256, 128, 512});
@@ -210,31 +210,31 @@ TEST(FrameParameters, ATechniqueParameterNamedLikeTheLightingPassesIsRefused) {
     if (e.code == graph::GraphErrorCode::param_shadows_frame)
       named = e.to_string().find("lighting") != std::string::npos && e.to_string().find("ambient") != std::string::npos &&
               e.to_string().find("hard.json") != std::string::npos;
-  EXPECT_TRUE(named) << plugin::errors_to_error(plan.errors()).details;
+  EXPECT_TRUE(named) << technique::errors_to_error(plan.errors()).details;
 }
 
 // Every paper technique ships its paper's constants as the `paper` preset, and each shipped
 // preset fits its technique's parameters and compiles.
 TEST(ShippedPresets, PaperPresetsApplyToTheirTechniquesAndCompile) {
-  const plugin::TechniqueRegistry& registry = techniques().registry;
+  const technique::TechniqueRegistry& registry = techniques().registry;
   for (const char* name : {"pcss", "pmchss", "mpg", "sspcss", "esm"}) {
-    const plugin::Technique* technique = registry.find(name);
+    const technique::Technique* technique = registry.find(name);
     ASSERT_NE(technique, nullptr) << name;
-    std::vector<std::string> shipped = plugin::shipped_presets(*technique);
+    std::vector<std::string> shipped = technique::shipped_presets(*technique);
     EXPECT_NE(std::find(shipped.begin(), shipped.end(), "paper"), shipped.end()) << name;
-    auto desc = plugin::load_technique_graph(*technique, techniques().library.declarations());
+    auto desc = technique::load_technique_graph(*technique, techniques().library.declarations());
     ASSERT_TRUE(desc) << desc.error().to_string();
     for (const std::string& preset_name : shipped) {
-      auto preset = plugin::load_preset(*technique, preset_name);
+      auto preset = technique::load_preset(*technique, preset_name);
       ASSERT_TRUE(preset) << preset.error().to_string();
       graph::ParameterSet defaults(desc->parameters);
-      auto applied = plugin::preset_applied(*preset, name, defaults);
+      auto applied = technique::preset_applied(*preset, name, defaults);
       ASSERT_TRUE(applied) << name << "@" << preset_name << ": " << applied.error().to_string();
       // PCSS is physically driven in the paper already (Fernando 2005): its defaults are its paper.
       if (std::string(name) != "pcss") {
         EXPECT_NE(applied->to_json(), defaults.to_json()) << name << "@" << preset_name << " is the defaults";
       }
-      auto frame = plugin::compose_frame_graph(*desc);
+      auto frame = technique::compose_frame_graph(*desc);
       ASSERT_TRUE(frame) << frame.error().to_string();
       auto plan = graph::compile(*frame, techniques().library.declarations(), *applied, {1920, 1080, 2048});
       EXPECT_TRUE(plan) << name << "@" << preset_name;
@@ -243,14 +243,14 @@ TEST(ShippedPresets, PaperPresetsApplyToTheirTechniquesAndCompile) {
 }
 
 TEST(ShippedPresets, UnknownPresetNamesTheShippedOnes) {
-  const plugin::Technique* pmchss = techniques().registry.find("pmchss");
+  const technique::Technique* pmchss = techniques().registry.find("pmchss");
   ASSERT_NE(pmchss, nullptr);
-  auto missing = plugin::load_preset(*pmchss, "papr");
+  auto missing = technique::load_preset(*pmchss, "papr");
   ASSERT_FALSE(missing);
   EXPECT_NE(missing.error().message.find("shipped: paper"), std::string::npos) << missing.error().message;
-  const plugin::Technique* hard = techniques().registry.find("hard");
+  const technique::Technique* hard = techniques().registry.find("hard");
   ASSERT_NE(hard, nullptr);
-  auto none = plugin::load_preset(*hard, "paper");
+  auto none = technique::load_preset(*hard, "paper");
   ASSERT_FALSE(none);
   EXPECT_NE(none.error().message.find("ships none"), std::string::npos) << none.error().message;
 }

@@ -13,7 +13,7 @@
 
 #include "mpg_rig.h"
 #include "mpg_settings.h"
-#include "plugin/technique.h"
+#include "technique/technique.h"
 #include "test_support/run_command.h"
 #include "techniques/builtin_techniques.h"
 
@@ -40,7 +40,7 @@ CommandRun run_cli(const std::string& args) {
 TEST(MpgGraph, RepeatAndEnabledShapeThePlan) {
   test::MpgRig rig(64, 48, 256);
   rig.set_scene(test::make_scene("ball"));
-  plugin::TechniqueSession& s = rig.session();
+  technique::TechniqueSession& s = rig.session();
   // Defaults: multi-pass with 10 blur passes, named multipass_blur[0..9]; dilation on; no
   // early-out; the other alterations disabled, not merely culled.
   EXPECT_EQ(count_passes(s.plan(), "multipass_blur"), 10u);

@@ -41,11 +41,11 @@ TEST(PluginLibrary, TheTemplateAsAPluginRendersItsHardShadow) {
 }
 
 TEST(PluginLibrary, LoadingADirectoryRegistersItsPassTypesAndReadsItsFilesFromThere) {
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   Result<int> loaded = plugin::load_plugin_directory(plugin_dir("reload_build1"), registry);
   ASSERT_TRUE(loaded) << loaded.error().to_string();
   EXPECT_EQ(*loaded, 1);
-  const plugin::Technique* t = registry.find("reload_probe");
+  const technique::Technique* t = registry.find("reload_probe");
   ASSERT_NE(t, nullptr);
   EXPECT_NE(make_pass_library(registry).find("reload_probe_fill"), nullptr);
   // Its graph exists only beside the .so: the directory became a shader root.
@@ -80,7 +80,7 @@ TEST(PluginLibrary, ALibraryWithoutTheEntryPointsIsRefused) {
 TEST(PluginLibrary, AFileThatIsNoLibraryIsRefused) {
   const fs::path dir = fresh_temp_dir("plugin_not_a_library");
   std::ofstream(dir / "text.so") << "not an ELF file\n";
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   Result<int> loaded = plugin::load_plugin_directory(dir.string(), registry);
   ASSERT_FALSE(loaded);
   EXPECT_EQ(loaded.error().file, (dir / "text.so").string());
@@ -89,7 +89,7 @@ TEST(PluginLibrary, AFileThatIsNoLibraryIsRefused) {
 }
 
 TEST(PluginLibrary, AMissingDirectoryIsBadInput) {
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   Result<int> loaded = plugin::load_plugins({plugin_dir("no_such_directory")}, registry);
   ASSERT_FALSE(loaded);
   EXPECT_EQ(loaded.error().file, plugin_dir("no_such_directory"));

@@ -1,12 +1,12 @@
-// The calibration search space and optimiser (sandbox/cli/calibration.h) on analytic objectives:
+// The calibration search space and optimiser (measurement/calibration.h) on analytic objectives:
 // no GL. The CLI end to end is in eval_cli_test.cpp.
-#include "cli/calibration.h"
+#include "measurement/calibration.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace penumbra::cli {
+namespace penumbra::measurement {
 namespace {
 
 graph::ParameterSet technique_like() {
@@ -125,4 +125,4 @@ TEST(CalibrationFit, AnObjectiveErrorStopsTheFitWithThatError) {
 }
 
 }  // namespace
-}  // namespace penumbra::cli
+}  // namespace penumbra::measurement

@@ -3,12 +3,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/eval_report.h"
+#include "measurement/eval_report.h"
 
 using namespace penumbra;
 
 TEST(EvalReport, JsonHasTheDesignSchema) {
-  cli::EvalReport report{"ball", "raytraced", {}};
+  measurement::EvalReport report{"ball", "raytraced", {}};
   metrics::MaskErrors e;
   e.rmse = 0.1;
   e.rmse_penumbra = 0.2;
@@ -17,7 +17,7 @@ TEST(EvalReport, JsonHasTheDesignSchema) {
   e.ssim = 0.8;
   e.edge_error = 0.3;
   report.rows.push_back({"hard", e, 1.5});
-  const nlohmann::json j = nlohmann::json::parse(cli::eval_report_json(report));
+  const nlohmann::json j = nlohmann::json::parse(measurement::eval_report_json(report));
   ASSERT_EQ(j.size(), 3u);
   EXPECT_EQ(j["scene"], "ball");
   EXPECT_EQ(j["reference"], "raytraced");

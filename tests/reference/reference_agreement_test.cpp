@@ -6,7 +6,6 @@
 #include "metrics/heat_map.h"
 #include "metrics/mask_metrics.h"
 #include "reference_session.h"
-#include "techniques/reference/reference_progress.h"
 #include "test_support/inspection.h"
 
 using namespace penumbra;
@@ -31,8 +30,9 @@ Agreement raster_vs_raytraced(const std::string& scene) {
   r.set("map_size=2048");  // 1024 passes too on ball (0.0017) but leaves fence at 0.009
   r.set("maps_per_frame=64");
   r.render(4);
-  const reference::ReferenceProgress p = reference::reference_progress();
-  EXPECT_EQ(p.method, "raster");
+  EXPECT_TRUE(r.session().progress().has_value()) << "the raster reference reported no progress";
+  const exec::PassProgress p = r.session().progress().value_or(exec::PassProgress{});
+  EXPECT_EQ(p.label, "raster");
   EXPECT_EQ(p.done, 256);
   EXPECT_TRUE(p.complete());
   const metrics::MaskImage raster = r.mask();

@@ -4,9 +4,17 @@
 
 #include "metrics/mask_metrics.h"
 #include "reference_session.h"
-#include "techniques/reference/reference_progress.h"
 
 using namespace penumbra;
+
+namespace {
+// The reference pass's progress: it reports some once it has run.
+exec::PassProgress progress(test::ReferenceSession& r) {
+  const std::optional<exec::PassProgress>& p = r.session().progress();
+  EXPECT_TRUE(p.has_value()) << "the reference reported no progress";
+  return p.value_or(exec::PassProgress{});
+}
+}  // namespace
 
 TEST(ReferenceProgressive, ErrorToRaytracedFallsAsSamplesAccumulate) {
   test::ReferenceSession r("ball");
@@ -26,7 +34,7 @@ TEST(ReferenceProgressive, ErrorToRaytracedFallsAsSamplesAccumulate) {
       r.render();
       done += 4;
     }
-    ASSERT_EQ(reference::reference_progress().done, target);
+    ASSERT_EQ(progress(r).done, target);
     auto e = metrics::compare_masks(r.mask(), truth, coverage);
     ASSERT_TRUE(e);
     rmse.push_back(e->rmse);
@@ -42,23 +50,23 @@ TEST(ReferenceProgressive, MovingTheLightResetsTheCount) {
   r.set("map_size=256");
   r.set("maps_per_frame=8");
   r.render(3);
-  reference::ReferenceProgress p = reference::reference_progress();
+  exec::PassProgress p = progress(r);
   EXPECT_EQ(p.done, 24);
   EXPECT_EQ(p.total, 64);
-  const std::uint64_t resets = p.resets;
+  const std::uint64_t restarts = p.restarts;
   r.render();  // nothing changed: keeps accumulating
-  EXPECT_EQ(reference::reference_progress().done, 32);
+  EXPECT_EQ(progress(r).done, 32);
   r.session().light().position += glm::vec3(0.3f, 0.0f, 0.0f);
   r.render();
-  p = reference::reference_progress();
+  p = progress(r);
   EXPECT_EQ(p.done, 8) << "a moved light must restart the accumulation";
-  EXPECT_EQ(p.resets, resets + 1);
+  EXPECT_EQ(p.restarts, restarts + 1);
   r.session().camera().position += glm::vec3(0.0f, 0.1f, 0.0f);
   r.render();
-  EXPECT_EQ(reference::reference_progress().done, 8) << "a moved camera must restart the accumulation";
+  EXPECT_EQ(progress(r).done, 8) << "a moved camera must restart the accumulation";
   r.render(20);  // runs to completion and stops there
-  EXPECT_EQ(reference::reference_progress().done, 64);
-  EXPECT_TRUE(reference::reference_progress().complete());
+  EXPECT_EQ(progress(r).done, 64);
+  EXPECT_TRUE(progress(r).complete());
 }
 
 TEST(ReferenceProgressive, RaytracedTracesOnlyWhenInputsChange) {
@@ -66,14 +74,28 @@ TEST(ReferenceProgressive, RaytracedTracesOnlyWhenInputsChange) {
   r.set("method=raytraced");
   r.set("rays=16");
   r.render();
-  const std::uint64_t resets = reference::reference_progress().resets;
-  EXPECT_TRUE(reference::reference_progress().complete());
+  const std::uint64_t restarts = progress(r).restarts;
+  EXPECT_TRUE(progress(r).complete());
   r.render(2);
-  EXPECT_EQ(reference::reference_progress().resets, resets);
+  EXPECT_EQ(progress(r).restarts, restarts);
   const metrics::MaskImage before = r.mask();
   // Turn the light (a directional light's position alone does not move its shadows).
   r.session().light().direction = glm::normalize(r.session().light().direction + glm::vec3(0.3f, 0.0f, 0.0f));
   r.render();
-  EXPECT_EQ(reference::reference_progress().resets, resets + 1);
+  EXPECT_EQ(progress(r).restarts, restarts + 1);
   EXPECT_NE(before.pixels, r.mask().pixels);
+}
+
+TEST(ReferenceProgressive, ProgressBelongsToTheSessionsPlan) {
+  test::ReferenceSession r("ball", 64);
+  r.set("samples=16");
+  r.set("map_size=256");
+  r.set("maps_per_frame=4");
+  r.render();
+  EXPECT_EQ(progress(r).done, 4);
+  EXPECT_EQ(progress(r).total, 16);
+  EXPECT_EQ(progress(r).unit, "shadow maps");
+  ASSERT_TRUE(r.session().set_technique("hard"));
+  r.render();
+  EXPECT_FALSE(r.session().progress().has_value()) << "a technique without a progressive pass reports none";
 }

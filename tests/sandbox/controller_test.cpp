@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "app/controller.h"
-#include "app/param_applicability.h"
-#include "plugin/preset.h"
+#include "sandbox/controller.h"
+#include "sandbox/param_applicability.h"
+#include "technique/preset.h"
 #include "util/file_write.h"
 #include "image_stats.h"
 #include "test_support/gl_context.h"
@@ -38,7 +38,7 @@ struct Fixture : ::testing::Test {
   std::filesystem::path temp(const std::string& name) {
     return std::filesystem::temp_directory_path() / ("penumbra_sandbox_" + name);
   }
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   exec::PassLibrary library;
   std::unique_ptr<SandboxController> controller;
 };
@@ -214,7 +214,7 @@ TEST_F(Fixture, ParametersWithoutEffectAreFoundFromTheGraph) {
   ASSERT_TRUE(controller->set_technique("pcf"));
   ASSERT_TRUE(controller->set_param("kernel", "box"));
   auto applies = [&](const std::string& name) {
-    plugin::TechniqueSession& s = controller->session();
+    technique::TechniqueSession& s = controller->session();
     return param_applicability(*s.params().find(name), s.params(), s.graph(), s.plan());
   };
   const Applicability box = applies("samples");

@@ -5,8 +5,8 @@
 
 #include <algorithm>
 
-#include "app/graph_layout.h"
-#include "app/graph_view_model.h"
+#include "sandbox/graph_layout.h"
+#include "sandbox/graph_view_model.h"
 
 namespace penumbra::sandbox {
 namespace {

@@ -2,7 +2,7 @@
 // any dragged panel width; the panel width is clamped so both stay usable.
 #include <gtest/gtest.h>
 
-#include "app/layout.h"
+#include "sandbox/layout.h"
 
 namespace penumbra::sandbox {
 namespace {

@@ -2,7 +2,7 @@
 // passes of the compiled plan that read the parameter (disabled, culled, `when` not holding).
 #include <gtest/gtest.h>
 
-#include "app/param_applicability.h"
+#include "sandbox/param_applicability.h"
 
 namespace penumbra::sandbox {
 namespace {

@@ -1,4 +1,4 @@
-// The sandbox reloads a rebuilt plugin (app/plugin_reload.h), under OSMesa without a window: the
+// The sandbox reloads a rebuilt plugin (sandbox/plugin_reload.h), under OSMesa without a window: the
 // test plays the rebuild by copying the other build of tests/plugin's reload_probe plugin over
 // the watched .so. The new build runs with the parameter values that still exist; a build that
 // fails to load leaves the old one running and its error shown.
@@ -10,8 +10,8 @@
 #include <fstream>
 #include <thread>
 
-#include "app/controller.h"
-#include "app/plugin_reload.h"
+#include "sandbox/controller.h"
+#include "sandbox/plugin_reload.h"
 #include "techniques/builtin_techniques.h"
 #include "test_support/gl_context.h"
 #include "test_support/temp_dir.h"
@@ -69,7 +69,7 @@ struct PluginReload : ::testing::Test {
   fs::path dir;
   int installs = 0;
   PluginReloader plugins;  // before the registry: unloads after everything running plugin code
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   exec::PassLibrary library;
   std::unique_ptr<SandboxController> controller;
 };

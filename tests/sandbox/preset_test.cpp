@@ -1,7 +1,7 @@
 // Preset round trip and all-or-nothing rejection (no window, no GL).
 #include <gtest/gtest.h>
 
-#include "plugin/preset.h"
+#include "technique/preset.h"
 
 namespace penumbra::sandbox {
 namespace {
@@ -26,12 +26,12 @@ TEST(Preset, SaveThenLoadGivesTheSameValues) {
   ASSERT_TRUE(saved.set("samples", 40));
   ASSERT_TRUE(saved.set("use_blur", false));
   ASSERT_TRUE(saved.set("kernel", std::string("box")));
-  std::string text = plugin::format_preset("pcss", saved);
+  std::string text = technique::format_preset("pcss", saved);
 
-  auto preset = plugin::parse_preset(text, "soft.json");
+  auto preset = technique::parse_preset(text, "soft.json");
   ASSERT_TRUE(preset) << preset.error().to_string();
   EXPECT_EQ(preset->technique, "pcss");
-  auto loaded = plugin::preset_applied(*preset, "pcss", pcss_like());
+  auto loaded = technique::preset_applied(*preset, "pcss", pcss_like());
   ASSERT_TRUE(loaded) << loaded.error().to_string();
   EXPECT_DOUBLE_EQ(loaded->get_real("light_size"), 2.25);
   EXPECT_EQ(loaded->get_int("samples"), 40);
@@ -41,10 +41,10 @@ TEST(Preset, SaveThenLoadGivesTheSameValues) {
 }
 
 TEST(Preset, PresetForAnotherTechniqueIsRejected) {
-  auto preset = plugin::parse_preset(R"({"technique": "pcf", "parameters": {"samples": 4}})", "p.json");
+  auto preset = technique::parse_preset(R"({"technique": "pcf", "parameters": {"samples": 4}})", "p.json");
   ASSERT_TRUE(preset);
   ParameterSet current = pcss_like();
-  auto r = plugin::preset_applied(*preset, "pcss", current);
+  auto r = technique::preset_applied(*preset, "pcss", current);
   ASSERT_FALSE(r);
   EXPECT_NE(r.error().message.find("'pcf'"), std::string::npos) << r.error().message;
   EXPECT_NE(r.error().message.find("'pcss'"), std::string::npos) << r.error().message;
@@ -52,31 +52,31 @@ TEST(Preset, PresetForAnotherTechniqueIsRejected) {
 
 TEST(Preset, UnknownKeyRejectsTheWholePreset) {
   // samples alone would be fine; the unknown key must stop it from being applied partially.
-  auto preset = plugin::parse_preset(R"({"technique": "pcss", "parameters": {"samples": 4, "bogus": 1}})", "p.json");
+  auto preset = technique::parse_preset(R"({"technique": "pcss", "parameters": {"samples": 4, "bogus": 1}})", "p.json");
   ASSERT_TRUE(preset);
   ParameterSet current = pcss_like();
   const std::string before = current.to_json();
-  auto r = plugin::preset_applied(*preset, "pcss", current);
+  auto r = technique::preset_applied(*preset, "pcss", current);
   ASSERT_FALSE(r);
   EXPECT_NE(r.error().to_string().find("bogus"), std::string::npos) << r.error().to_string();
   EXPECT_EQ(current.to_json(), before);
 }
 
 TEST(Preset, OutOfRangeValueRejectsTheWholePreset) {
-  auto preset = plugin::parse_preset(R"({"technique": "pcss", "parameters": {"use_blur": false, "samples": 1000}})",
+  auto preset = technique::parse_preset(R"({"technique": "pcss", "parameters": {"use_blur": false, "samples": 1000}})",
                              "p.json");
   ASSERT_TRUE(preset);
-  EXPECT_FALSE(plugin::preset_applied(*preset, "pcss", pcss_like()));
+  EXPECT_FALSE(technique::preset_applied(*preset, "pcss", pcss_like()));
 }
 
 TEST(Preset, MalformedPresetsNameTheProblem) {
-  auto not_json = plugin::parse_preset("{", "a.json");
+  auto not_json = technique::parse_preset("{", "a.json");
   ASSERT_FALSE(not_json);
   EXPECT_EQ(not_json.error().file, "a.json");
-  auto no_technique = plugin::parse_preset(R"({"parameters": {}})", "b.json");
+  auto no_technique = technique::parse_preset(R"({"parameters": {}})", "b.json");
   ASSERT_FALSE(no_technique);
   EXPECT_NE(no_technique.error().message.find("technique"), std::string::npos);
-  auto extra = plugin::parse_preset(R"({"technique": "x", "parameters": {}, "extra": 1})", "c.json");
+  auto extra = technique::parse_preset(R"({"technique": "x", "parameters": {}, "extra": 1})", "c.json");
   ASSERT_FALSE(extra);
   EXPECT_NE(extra.error().message.find("extra"), std::string::npos);
 }

@@ -1,6 +1,6 @@
 // penumbra-sandbox with the tests' tiny technique registered next to the built-ins: the Xvfb
 // test drives the real window, UI and script code through it.
-#include "app/sandbox_main.h"
+#include "sandbox/sandbox_main.h"
 #include "tiny_technique.h"
 
 int main(int argc, char** argv) {

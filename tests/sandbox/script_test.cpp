@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "app/options.h"
-#include "app/script.h"
+#include "sandbox/options.h"
+#include "sandbox/script.h"
 
 namespace penumbra::sandbox {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "app/shadow_debug.h"
+#include "sandbox/shadow_debug.h"
 #include "scene/scene.h"
 
 namespace penumbra::sandbox {

@@ -5,9 +5,9 @@
 
 #include <algorithm>
 
-#include "app/controller.h"
-#include "app/script.h"
-#include "app/script_runner.h"
+#include "sandbox/controller.h"
+#include "sandbox/script.h"
+#include "sandbox/script_runner.h"
 #include "test_support/gl_context.h"
 #include "techniques/builtin_techniques.h"
 #include "tiny_technique.h"
@@ -21,18 +21,18 @@ constexpr size_t kPoolBound = 64;
 
 TEST(SandboxSoak, TwoThousandRandomStepsKeepTheSandboxHealthy) {
   test::gl_context();
-  plugin::TechniqueRegistry registry;
+  technique::TechniqueRegistry registry;
   register_builtin_techniques(registry);
   sandbox_test::register_tiny_technique(registry);
   exec::PassLibrary library = make_pass_library(registry);
 
   std::vector<TechniqueInfo> infos;
-  for (const plugin::Technique& t : registry.all()) {
+  for (const technique::Technique& t : registry.all()) {
     // The reference's sample counts and map sizes reach 65536 and 16384 texels: thousands of
     // random frames of it take many minutes on llvmpipe. It has its own tests; the Xvfb test
     // visits its parameters' min/max/default once.
     if (t.name == "reference") continue;
-    auto g = plugin::load_technique_graph(t, library.declarations());
+    auto g = technique::load_technique_graph(t, library.declarations());
     ASSERT_TRUE(g) << g.error().to_string();
     infos.push_back({t.name, g->parameters});
   }

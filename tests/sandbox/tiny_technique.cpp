@@ -65,7 +65,7 @@ void register_passes(exec::PassLibrary& library) {
 
 }  // namespace
 
-void register_tiny_technique(plugin::TechniqueRegistry& registry) {
+void register_tiny_technique(technique::TechniqueRegistry& registry) {
   registry.add({.name = kTinyTechnique,
                 .graph_file = "tests/sandbox/tiny_technique.json",
                 .register_passes = register_passes});

@@ -3,7 +3,7 @@
 // a frame pixel maps back to the texel drawn there.
 #include <gtest/gtest.h>
 
-#include "app/view_mapping.h"
+#include "sandbox/view_mapping.h"
 
 namespace penumbra::sandbox {
 namespace {

@@ -1,7 +1,7 @@
 // ParamDesc -> widget spec, and the structural/uniform classification (no window, no GL).
 #include <gtest/gtest.h>
 
-#include "app/widget_spec.h"
+#include "sandbox/widget_spec.h"
 
 namespace penumbra::sandbox {
 namespace {

@@ -45,7 +45,7 @@ scene::Scene ground_only() {
 TEST(SspcssBadInput, OutOfRangeParametersAreRefusedWithTheirRange) {
   BaselineRenderer r;
   r.render(builtin_scene("ball"), "sspcss", {}, 64, 48);
-  plugin::TechniqueSession& s = r.session();
+  technique::TechniqueSession& s = r.session();
   struct Case {
     const char* assignment;
     const char* range;

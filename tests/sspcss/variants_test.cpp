@@ -13,7 +13,7 @@ namespace {
 
 constexpr int kW = 256, kH = 192;
 
-std::vector<std::string> planned_pass_names(plugin::TechniqueSession& s) {
+std::vector<std::string> planned_pass_names(technique::TechniqueSession& s) {
   std::vector<std::string> names;
   for (const graph::PlannedPass& p : s.plan().passes) names.push_back(p.name);
   return names;

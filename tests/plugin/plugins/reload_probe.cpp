@@ -22,7 +22,7 @@ class FillPass final : public penumbra::exec::PassImpl {
   }
 };
 
-void register_technique(penumbra::plugin::TechniqueRegistry& registry) {
+void register_technique(penumbra::technique::TechniqueRegistry& registry) {
   registry.add({.name = "reload_probe",
                 .graph_file = RELOAD_PROBE_BUILD == 1 ? "reload_probe/build1.json" : "reload_probe/build2.json",
                 .register_passes = [](penumbra::exec::PassLibrary& library) {

@@ -9,6 +9,6 @@ extern "C" __attribute__((visibility("default"))) int penumbra_plugin_abi_versio
 }
 
 extern "C" __attribute__((visibility("default"))) void penumbra_register_plugin(
-    penumbra::plugin::TechniqueRegistry&) {
+    penumbra::technique::TechniqueRegistry&) {
   std::abort();  // a host that calls this fails the test loudly
 }

@@ -1,0 +1,106 @@
+#include "technique/preset.h"
+
+#include <filesystem>
+#include <set>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "gl/shader_files.h"
+#include "technique/technique.h"
+#include "util/file_read.h"
+
+namespace penumbra::technique {
+
+std::string format_preset(const std::string& technique, const graph::ParameterSet& params) {
+  nlohmann::ordered_json j;
+  j["technique"] = technique;
+  j["parameters"] = nlohmann::ordered_json::parse(params.to_json());
+  return j.dump(2) + "\n";
+}
+
+Result<Preset> parse_preset(const std::string& text, const std::string& source) {
+  auto fail = [&](std::string message, std::string where = "") {
+    Error e = make_error(std::move(message));
+    e.file = source;
+    e.where = std::move(where);
+    return e;
+  };
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) return fail("preset is not valid JSON");
+  if (!j.is_object()) return fail("a preset must be an object {\"technique\": ..., \"parameters\": {...}}");
+  for (const auto& [key, value] : j.items())
+    if (key != "technique" && key != "parameters")
+      return fail("unknown key '" + key + "' (expected \"technique\" and \"parameters\")", "/" + key);
+  if (!j.contains("technique") || !j["technique"].is_string())
+    return fail("missing string \"technique\"", "/technique");
+  if (!j.contains("parameters") || !j["parameters"].is_object())
+    return fail("missing object \"parameters\"", "/parameters");
+  return Preset{j["technique"].get<std::string>(), j["parameters"].dump()};
+}
+
+Result<graph::ParameterSet> preset_applied(const Preset& preset, const std::string& technique,
+                                           const graph::ParameterSet& current) {
+  if (preset.technique != technique)
+    return make_error("preset is for technique '" + preset.technique + "', the active technique is '" +
+                      technique + "': nothing applied");
+  graph::ParameterSet next = current;
+  if (Status s = next.apply_json(preset.parameters_json); !s) {
+    Error e = s.error();
+    e.message = "preset not applied: " + e.message;
+    return e;
+  }
+  return next;
+}
+
+namespace {
+
+// "techniques/baseline/pcss.json" -> "techniques/baseline/presets/pcss."
+std::string preset_prefix(const Technique& technique) {
+  const std::filesystem::path graph(technique.graph_file);
+  return (graph.parent_path() / "presets" / graph.stem()).generic_string() + ".";
+}
+
+}  // namespace
+
+std::vector<std::string> shipped_presets(const Technique& technique) {
+  const std::string prefix = preset_prefix(technique);
+  std::set<std::string> names;
+  auto add = [&](std::string_view path) {
+    if (path.starts_with(prefix) && path.ends_with(".json") && path.size() > prefix.size() + 5)
+      names.emplace(path.substr(prefix.size(), path.size() - prefix.size() - 5));
+  };
+  for (const gl::EmbeddedShaderFile& f : gl::embedded_shader_files()) add(f.path);
+  // A plugin's presets are files beside its graph, not embedded.
+  const gl::ShaderFileSystem& files = gl::ShaderFileSystem::default_instance();
+  if (auto graph = files.disk_path(technique.graph_file)) {
+    std::error_code ec;
+    const std::filesystem::path dir = graph->parent_path() / "presets";
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      const std::string file = entry.path().filename().string();
+      const std::string stem = std::filesystem::path(technique.graph_file).stem().string() + ".";
+      if (file.starts_with(stem) && file.ends_with(".json") && file.size() > stem.size() + 5)
+        names.insert(file.substr(stem.size(), file.size() - stem.size() - 5));
+    }
+  }
+  return {names.begin(), names.end()};
+}
+
+Result<Preset> load_preset(const Technique& technique, const std::string& name) {
+  const bool is_path = name.find('/') != std::string::npos || name.ends_with(".json");
+  const std::string file = is_path ? name : preset_prefix(technique) + name + ".json";
+  Result<std::string> text = is_path ? read_file_whole(file) : gl::ShaderFileSystem::default_instance().read(file);
+  if (!text) {
+    if (is_path) return text.error();
+    std::string known;
+    for (const std::string& n : shipped_presets(technique)) known += (known.empty() ? "" : ", ") + n;
+    return make_error("technique '" + technique.name + "' has no preset '" + shortened(name) + "'" +
+                      (known.empty() ? std::string(" (it ships none)") : " (shipped: " + known + ")"));
+  }
+  Result<Preset> preset = parse_preset(*text, file);
+  if (preset && preset->technique != technique.name)
+    return make_error("preset " + file + " is for technique '" + preset->technique + "', not '" + technique.name + "'");
+  return preset;
+}
+
+}  // namespace penumbra::technique

@@ -1,0 +1,35 @@
+#pragma once
+// The results of `penumbra eval` as a table and as the JSON of docs/evaluation.md:
+//   {"scene":..., "reference":..., "rows":[{"technique":..., "rmse":..., "rmse_penumbra":...,
+//    "mae":..., "max_error":..., "ssim":..., "edge_error":..., "gpu_ms":...}]}
+// With --flicker, the top level adds "flicker_motion", "flicker_frames" and "flicker_reference"
+// (the reference's own temporal change) and each row "temporal_change" and "flicker" (its
+// temporal change minus the reference's).
+#include <string>
+#include <vector>
+
+#include "metrics/mask_metrics.h"
+
+namespace penumbra::measurement {
+
+struct EvalRow {
+  std::string technique;
+  metrics::MaskErrors errors;
+  double gpu_ms = 0.0;  // median over the measured frames of the technique's own passes
+  double temporal_change = 0.0;  // --flicker: mean |change| between reprojected frames
+  double flicker = 0.0;          // temporal_change minus the reference's on the same frames
+};
+
+struct EvalReport {
+  std::string scene;
+  std::string reference;  // "raytraced" or "raster"
+  std::vector<EvalRow> rows;
+  std::string flicker_motion;      // "pan" or "light"; empty: no flicker measured
+  int flicker_frames = 0;
+  double flicker_reference = 0.0;  // the reference's temporal change
+};
+
+std::string eval_report_json(const EvalReport& report);
+std::string eval_report_table(const EvalReport& report);
+
+}  // namespace penumbra::measurement

@@ -1,4 +1,0 @@
-// penumbra-sandbox: see sandbox_main.cpp and docs/sandbox.md.
-#include "app/sandbox_main.h"
-
-int main(int argc, char** argv) { return penumbra::sandbox::sandbox_main(argc, argv); }

@@ -1,0 +1,54 @@
+#include "sandbox/compare.h"
+
+#include <algorithm>
+
+#include "measurement/eval_capture.h"
+#include "measurement/reference_frame.h"
+#include "technique/frame_graph.h"
+
+namespace penumbra::sandbox {
+
+std::string default_compare_partner(const technique::TechniqueRegistry& registry, const std::string& primary) {
+  std::vector<std::string> names = registry.names();
+  if (registry.find(measurement::kReferenceTechnique)) return measurement::kReferenceTechnique;
+  auto it = std::find(names.begin(), names.end(), primary);
+  if (it == names.end() || names.size() == 1) return primary;
+  ++it;
+  return it == names.end() ? names.front() : *it;
+}
+
+Status configure_partner(technique::TechniqueSession& secondary, technique::TechniqueSession& primary,
+                         const std::string& technique, int width, int height) {
+  if (!secondary.has_scene()) secondary.set_scene(primary.scene());
+  if (Status s = secondary.resize(width, height); !s) return s;
+  if (Status s = secondary.set_shadow_size(primary.settings().shadow_size); !s) return s;
+  secondary.compile_options().no_reuse = primary.compile_options().no_reuse;
+  secondary.compile_options().extended_lifetimes = primary.compile_options().extended_lifetimes;
+  secondary.executor().options().immediate = primary.executor().options().immediate;
+  if (secondary.technique() != technique) return secondary.set_technique(technique);
+  return {};
+}
+
+void update_compare_stats(CompareState& state, technique::TechniqueSession& primary,
+                          technique::TechniqueSession& secondary) {
+  gl::Texture* a = primary.executor().resource(technique::kShadowMask);
+  gl::Texture* b = secondary.executor().resource(technique::kShadowMask);
+  gl::Texture* pos = primary.executor().resource("gbuffer_position");
+  if (!a || !b || !pos) {
+    state.stats_error = "shadow_mask or gbuffer_position missing";
+    return;
+  }
+  // The secondary plays the reference: RMSE of the primary against it.
+  Result<metrics::MaskErrors> e = metrics::compare_masks(measurement::read_mask_image(*a), measurement::read_mask_image(*b),
+                                                         measurement::read_coverage(*pos));
+  if (!e) {
+    state.stats_error = e.error().to_string();
+    return;
+  }
+  state.stats = *e;
+  state.stats_error.clear();
+  state.rmse_history.push_back(static_cast<float>(e->rmse));
+  if (state.rmse_history.size() > CompareState::kHistory) state.rmse_history.erase(state.rmse_history.begin());
+}
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,44 @@
+#pragma once
+// Compare mode's state and its pieces outside the controller: which technique to compare with
+// by default, setting the second session up like the first, and the mask statistics (the
+// second session plays the reference).
+//
+//   configure_partner(*secondary, *primary, "reference", w, h);
+//   update_compare_stats(state, *primary, *secondary);   // state.stats, rmse_history
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "metrics/mask_metrics.h"
+#include "technique/technique.h"
+#include "technique/technique_session.h"
+
+namespace penumbra::sandbox {
+
+struct CompareState {
+  bool enabled = false;
+  std::string with;                 // secondary technique
+  enum class View { split, error } view = View::split;
+  float split = 0.5f;               // split position, fraction of the width (left = primary)
+  float error_max = 0.25f;          // |a - b| shown white in the heat map
+  int stats_every = 10;             // frames between RMSE read-backs
+  std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
+  std::string stats_error;
+  std::vector<float> rmse_history;  // one per read-back, newest last, at most kHistory
+  static constexpr size_t kHistory = 240;
+};
+
+// "reference" when registered, else the technique after `primary` (wrapping), else `primary`.
+std::string default_compare_partner(const technique::TechniqueRegistry& registry, const std::string& primary);
+
+// The second session over the first's scene, size, shadow size and debug switches, running
+// `technique` (recompiles only when the technique changes).
+Status configure_partner(technique::TechniqueSession& secondary, technique::TechniqueSession& primary,
+                         const std::string& technique, int width, int height);
+
+// Reads both shadow masks and the receiver coverage back and compares them (secondary as the
+// reference); sets state.stats or state.stats_error and appends to the RMSE history.
+void update_compare_stats(CompareState& state, technique::TechniqueSession& primary,
+                          technique::TechniqueSession& secondary);
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,181 @@
+#pragma once
+// SandboxController: the sandbox's state and every action on it. The ImGui panels and script
+// steps call the SAME methods, so a script exercises exactly what a user clicks. It needs a
+// current GL context but no window: the frame is composed into its own presentation texture
+// (the window host blits it to the back buffer and draws the UI on top; a headless host reads it
+// back), so soak tests run it under OSMesa.
+//
+//   SandboxController c(registry, library);
+//   if (Status s = c.init("showcase", "pcss", 480, 320); !s) fail(s);
+//   c.set_param("samples", "32");
+//   c.set_compare(true);              // second session: "reference" if registered
+//   c.render_frame();
+//   c.save_presentation_png("out.png");
+//
+// Compare mode runs TWO TechniqueSessions (primary and secondary) over the same scene, camera
+// and light: each keeps its own compiled plan, texture pool and timings, so both can be inspected
+// and swapping one never recompiles the other. The cost is a second scene upload and a second
+// G-buffer per frame, which only compare mode pays.
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sandbox/compare.h"
+#include "sandbox/display.h"
+#include "sandbox/frame_composer.h"
+#include "exec/pass.h"
+#include "metrics/mask_metrics.h"
+#include "technique/technique.h"
+#include "technique/technique_session.h"
+#include "scene/staging.h"
+
+namespace penumbra::sandbox {
+
+
+class SandboxController {
+ public:
+  SandboxController(const technique::TechniqueRegistry& registry, const exec::PassLibrary& library);
+  ~SandboxController();
+
+  // Loads the scene, selects the technique (empty: the first registered) and sizes the frame.
+  Status init(const std::string& scene, const std::string& technique, int width, int height);
+
+  // --- scene, camera, light ---------------------------------------------------------------
+  // A built-in name or a glTF path, staged (scene/staging.h) for the frame's aspect: a glTF model
+  // gets a fitted camera, its own light or one that shows the shadows, and a ground plane when it
+  // has no floor and the ground switch is on. A different scene than the current one drops the
+  // camera pose and light overrides of the staging options (they were meant for the previous
+  // one); the ground switch stays. On failure the previous scene stays.
+  Status load_scene(const std::string& name_or_path);
+  const std::string& scene_name() const { return scene_name_; }
+  // The staging options the next load uses (the command line's --camera, --light-dir,
+  // --light-size, --ground); set before init().
+  void set_staging(const scene::StagingOptions& options) { staging_ = options; }
+  const scene::StagingOptions& staging() const { return staging_; }
+  // The ground switch: reloads the current scene with or without the added plane.
+  Status set_ground(bool on);
+  // Fitted camera, or one the glTF file places (Kind::file, by index or name): reloads and
+  // restages the current scene with that camera.
+  Status set_camera_choice(const scene::CameraChoice& choice);
+  // Cameras the current glTF places (empty for built-in scenes).
+  const std::vector<scene::SceneCamera>& file_cameras() const;
+  bool ground_added() const;
+  scene::Camera& camera() { return primary_->camera(); }
+  scene::Light& light() { return primary_->light(); }
+  // Free-fly camera: `axes` = (right, up, forward) in [-1, 1], dt in seconds; fast = Shift.
+  void move_camera(const glm::vec3& axes, float dt, bool fast);
+  // Mouse look, in pixels of mouse motion.
+  void look(float dx, float dy);
+  Status set_camera(const std::optional<glm::vec3>& position, const std::optional<glm::vec3>& look_at,
+                    std::optional<float> yaw_deg, std::optional<float> pitch_deg);
+  // Directional lights keep their emitter disk at the same distance from the scene centre.
+  void set_light_direction(glm::vec3 direction);
+  void set_light_type(scene::LightType type);
+  Status set_light_size(float diameter);
+  // Space in the window: the light looks where the camera looks (Sterna's demo).
+  void align_light_with_camera();
+  Status set_shadow_size(int texels);
+
+  // --- technique and parameters -------------------------------------------------------------
+  std::vector<std::string> technique_names() const { return registry_.names(); }
+  // The description in the technique's graph JSON (the one the CLI prints); read once per name.
+  const std::string& technique_description(const std::string& name) const;
+  Status set_technique(const std::string& name);
+  technique::TechniqueSession& session() { return *primary_; }
+  technique::TechniqueSession* secondary() { return secondary_.get(); }
+  // `text` as on the command line ("32", "true", "vogel"); structural ones recompile.
+  Status set_param(const std::string& name, const std::string& text);
+  Status set_param_value(const std::string& name, const graph::ParamValue& value);
+  Status reset_param(const std::string& name);  // "all" resets every parameter
+  Status save_preset(const std::string& path) const;
+  // A preset file, or the name of one the technique ships ("paper").
+  Status load_preset(const std::string& name_or_path);
+
+  // --- graph debug switches -----------------------------------------------------------------
+  Status set_no_reuse(bool on);
+  Status set_extended_lifetimes(bool on);
+  void set_immediate(bool on);
+
+  // --- resource viewer, compare -------------------------------------------------------------
+  ViewerSettings& viewer() { return viewer_; }
+  const DisplayPass& display() const { return display_; }
+  // Keeps `name` alive in the primary plan (recompiles) and shows it; "" turns the viewer off.
+  Status view_resource(const std::string& name);
+  CompareState& compare() { return compare_; }
+  // Shadow debug views (drawn by the window over the viewport; texel density by the composer).
+  struct DebugViews {
+    bool light_frustum = false;   // the shadow frustum and the emitter, in the scene
+    bool blocker_region = false;  // the blocker-search cone/region of the pixel under the cursor
+    bool texel_density = false;   // the frame shows shadow-map texels per pixel instead of colour
+  };
+  DebugViews& debug_views() { return debug_views_; }
+  // `with` empty: "reference" when registered, else the technique after the primary.
+  Status set_compare(bool enabled, const std::string& with = "");
+  void set_compare_view(CompareState::View view) { compare_.view = view; }
+  // Reads the statistics back from the last rendered frame now (scripts' `metrics`, exports).
+  void refresh_compare_stats() {
+    if (compare_.enabled && secondary_ && frames_ > 0) update_compare_stats();
+  }
+
+  // --- frames -------------------------------------------------------------------------------
+  Status resize(int width, int height);
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Renders the session(s), updates compare statistics, composes the presentation texture and
+  // (every ~0.5 s) reloads changed shaders.
+  Status render_frame();
+  std::uint64_t frames() const { return frames_; }
+  // The error of the last frame when it was refused ("" after a good one). A refused frame's
+  // presentation is DisplayPass::kRefusedColor, never the previous image.
+  const std::string& refused() const { return refused_; }
+  GLuint presentation_framebuffer() const { return display_.framebuffer(); }
+  Status save_presentation_png(const std::string& path) const;
+  // Shader compile errors of every program in use (technique passes and display), with file:line.
+  std::vector<Error> shader_errors() const;
+  void reload_shaders();
+  // Drains glGetError; an error lists every code seen.
+  static Status check_gl_errors(const std::string& when);
+
+  // --- plugin reload (sandbox/plugin_reload.h) ----------------------------------------------
+  // Destroys both sessions (their pass objects run plugin code), runs `swap` (which replaces
+  // code in the registry and pass library this controller was made with), then builds them
+  // again with the same scene, camera, light, sizes, debug switches and viewed resource, the
+  // same technique when it still exists (else the first) and every parameter value that still
+  // fits. The sessions come back whatever `swap` returns; its error is returned.
+  Status rebuild_sessions(const std::function<Status()>& swap);
+  // Runs from render_frame() every ~0.5 s, beside the shader reload (the plugin reloader's poll).
+  void set_reload_hook(std::function<void()> hook) { reload_hook_ = std::move(hook); }
+
+  // The last action's outcome for the UI: "" after success.
+  const std::string& message() const { return message_; }
+  Status note(Status s);  // records s in message() and returns it
+
+ private:
+  Status configure_secondary();
+  Status render_and_compose();
+  void update_compare_stats();
+
+  const technique::TechniqueRegistry& registry_;
+  mutable std::map<std::string, std::string> descriptions_;
+  const exec::PassLibrary& library_;
+  std::unique_ptr<technique::TechniqueSession> primary_;
+  std::unique_ptr<technique::TechniqueSession> secondary_;
+  std::string scene_name_;
+  scene::StagingOptions staging_;
+  DisplayPass display_;
+  ViewerSettings viewer_;
+  CompareState compare_;
+  DebugViews debug_views_;
+  int width_ = 0, height_ = 0;
+  std::uint64_t frames_ = 0;
+  std::string message_;
+  std::string refused_;
+  std::chrono::steady_clock::time_point last_reload_ = std::chrono::steady_clock::now();
+  std::function<void()> reload_hook_;
+};
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,95 @@
+#include "sandbox/frame_composer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "technique/frame_graph.h"
+#include "scene/light.h"
+#include "util/png.h"
+
+namespace penumbra::sandbox {
+
+Status compose_frame(DisplayPass& display, const FrameInputs& in) {
+  const bool comparing = in.secondary != nullptr;
+  // Compose: base layer (colour, split or error map), then the viewed resource.
+  display.begin();
+  DisplayPass::Layer base;
+  base.viewport = {0, 0, in.width, in.height};
+  base.uv_rect = zoomed_uv_rect(in.viewer.zoom);
+  gl::Texture* color_a = in.primary.executor().resource(technique::kColor);
+  if (!color_a) return make_error("the frame has no 'color' resource", ErrorKind::internal);
+  if (in.texel_density) {
+    gl::Texture* pos = in.primary.executor().resource("gbuffer_position");
+    if (!pos) return make_error("texel density: the frame has no gbuffer_position", ErrorKind::internal);
+    const scene::ShadowFrustum f = scene::shadow_frustum(in.primary.light(), in.primary.scene().bounds);
+    if (Status s = display.texel_density(*pos, f.view_proj, in.primary.settings().shadow_size, base.uv_rect,
+                                         in.viewer.zoom.zoom);
+        !s)
+      return s;
+  } else if (comparing && in.compare.view == CompareState::View::error) {
+    gl::Texture* a = in.primary.executor().resource(technique::kShadowMask);
+    gl::Texture* b = in.secondary->executor().resource(technique::kShadowMask);
+    gl::Texture* pos = in.primary.executor().resource("gbuffer_position");
+    if (!a || !b || !pos) return make_error("compare: shadow_mask or gbuffer_position missing", ErrorKind::internal);
+    if (Status s = display.difference(*a, *b, *pos); !s) return s;
+    base.texture = &display.difference_texture();
+    base.map = ViewerSettings::Map::heat;
+    base.range = {0.0f, std::max(in.compare.error_max, 1e-4f)};
+    base.coverage_in_g = true;
+    if (Status s = display.draw(base); !s) return s;
+  } else if (comparing) {
+    gl::Texture* color_b = in.secondary->executor().resource(technique::kColor);
+    int split_px = std::clamp(static_cast<int>(std::lround(in.compare.split * in.width)), 0, in.width);
+    DisplayPass::Layer left = base, right = base;
+    left.texture = color_a;
+    left.viewport = {0, 0, split_px, in.height};
+    left.uv_rect = zoomed_uv_rect(in.viewer.zoom, {0.0f, 0.0f, float(split_px) / in.width, 1.0f});
+    right.texture = color_b ? color_b : color_a;
+    right.viewport = {split_px, 0, in.width - split_px, in.height};
+    right.uv_rect = zoomed_uv_rect(in.viewer.zoom, {float(split_px) / in.width, 0.0f, float(in.width - split_px) / in.width, 1.0f});
+    if (split_px > 0)
+      if (Status s = display.draw(left); !s) return s;
+    if (split_px < in.width)
+      if (Status s = display.draw(right); !s) return s;
+  } else {
+    base.texture = color_a;
+    if (Status s = display.draw(base); !s) return s;
+  }
+
+  if (!in.viewer.resource.empty()) {
+    if (gl::Texture* t = in.primary.executor().resource(in.viewer.resource)) {
+      DisplayPass::Layer v;
+      v.texture = t;
+      v.map = in.viewer.map;
+      v.channel = in.viewer.channel;
+      v.range = {in.viewer.min, in.viewer.max};
+      v.linearize_depth = in.viewer.linearize_depth && t->info().is_depth && t->width() == in.width &&
+                          t->height() == in.height;
+      v.near_far = {in.primary.camera().near_plane, in.primary.camera().far_plane};
+      if (in.viewer.placement == ViewerSettings::Placement::full) {
+        // The texture's own aspect (a square shadow map stays square), zoomed like the frame.
+        v.viewport = fitted_rect(in.width, in.height, t->width(), t->height());
+        v.uv_rect = zoomed_uv_rect(in.viewer.zoom);
+      } else {
+        v.viewport = inset_rect(in.width, in.height, t->width(), t->height());
+      }
+      if (Status s = display.draw(v); !s) return s;
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return {};
+}
+
+Status save_target_png(const DisplayPass& display, const std::string& path) {
+  const gl::Texture& t = display.target();
+  std::vector<unsigned char> bottom_up(static_cast<size_t>(t.width()) * t.height() * 4);
+  glGetTextureImage(t.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottom_up.size()),
+                    bottom_up.data());
+  std::vector<unsigned char> top_down(bottom_up.size());
+  const size_t row = static_cast<size_t>(t.width()) * 4;
+  for (int y = 0; y < t.height(); ++y)
+    std::copy_n(&bottom_up[(t.height() - 1 - y) * row], row, &top_down[y * row]);
+  return write_png_rgba8(path, t.width(), t.height(), top_down);
+}
+
+}  // namespace penumbra::sandbox

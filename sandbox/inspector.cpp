@@ -1,0 +1,150 @@
+#include "sandbox/inspector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <nlohmann/json.hpp>
+
+#include "technique/frame_graph.h"
+#include "util/file_write.h"
+
+namespace penumbra::sandbox {
+
+namespace {
+
+float linear_depth(float d, float n, float f) {
+  const float z = d * 2.0f - 1.0f;
+  return 2.0f * n * f / (f + n - z * (f - n));
+}
+
+std::array<float, 4> read_texel(const gl::Texture& t, glm::ivec2 texel) {
+  const gl::FormatInfo& f = t.info();
+  std::array<float, 4> v{};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureSubImage(t.id(), 0, texel.x, texel.y, 0, 1, 1, 1, f.pixel_format, GL_FLOAT,
+                       static_cast<GLsizei>(sizeof(float) * f.channels), v.data());
+  return v;
+}
+
+bool screen_depth(const gl::Texture& t, const SandboxController& c) {
+  return t.info().is_depth && t.width() == c.width() && t.height() == c.height();
+}
+
+}  // namespace
+
+Result<PixelReadout> inspect_pixel(SandboxController& c, glm::ivec2 pixel) {
+  PixelReadout r;
+  r.pixel = pixel;
+  const glm::ivec2 gl_pixel(pixel.x, c.height() - 1 - pixel.y);
+  const ViewerSettings& v = c.viewer();
+  const gl::Texture* tex = nullptr;
+  std::optional<glm::ivec2> texel;
+  if (!v.resource.empty())
+    if (gl::Texture* t = c.session().executor().resource(v.resource)) {
+      const bool full = v.placement == ViewerSettings::Placement::full;
+      const glm::ivec4 rect = full ? fitted_rect(c.width(), c.height(), t->width(), t->height())
+                                   : inset_rect(c.width(), c.height(), t->width(), t->height());
+      texel = pixel_to_texel(gl_pixel, rect, full ? zoomed_uv_rect(v.zoom) : glm::vec4(0, 0, 1, 1), t->width(),
+                             t->height());
+      if (texel || full) {
+        tex = t;
+        r.source = v.resource;
+      }
+    }
+  if (!tex) {  // the final image under the pixel
+    const CompareState& cs = c.compare();
+    const bool comparing = cs.enabled && c.secondary();
+    technique::TechniqueSession* side = &c.session();
+    r.source = "color (A)";
+    if (comparing && cs.view == CompareState::View::error) {
+      tex = &c.display().difference_texture();
+      r.source = "|a - b|";
+    } else {
+      if (comparing && pixel.x >= static_cast<int>(std::lround(cs.split * c.width()))) {
+        side = c.secondary();
+        r.source = "color (B)";
+      }
+      tex = side->executor().resource(technique::kColor);
+    }
+    if (!tex) return make_error("the frame has no image to inspect yet");
+    texel = pixel_to_texel(gl_pixel, {0, 0, c.width(), c.height()}, zoomed_uv_rect(v.zoom), tex->width(), tex->height());
+  }
+  r.channels = tex->info().channels;
+  if (!texel) return r;
+  r.texel = texel;
+  r.value = read_texel(*tex, *texel);
+  if (screen_depth(*tex, c))
+    r.linear_depth = linear_depth(r.value[0], c.camera().near_plane, c.camera().far_plane);
+  return r;
+}
+
+std::string readout_text(const PixelReadout& r) {
+  if (!r.texel) return "";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s (%d, %d) =", r.source.c_str(), r.texel->x, r.texel->y);
+  std::string out = buf;
+  for (int i = 0; i < std::min(r.channels, 4); ++i) {
+    std::snprintf(buf, sizeof buf, " %.5g", r.value[i]);
+    out += buf;
+  }
+  if (r.linear_depth) {
+    std::snprintf(buf, sizeof buf, "  (distance %.4g)", *r.linear_depth);
+    out += buf;
+  }
+  return out;
+}
+
+Status write_inspection(SandboxController& c, int x, int y, const std::string& path) {
+  if (x >= c.width() || y >= c.height())
+    return make_error("inspect: pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                      std::to_string(c.width()) + "x" + std::to_string(c.height()) + " frame");
+  Result<PixelReadout> r = inspect_pixel(c, {x, y});
+  if (!r) return r.error();
+  nlohmann::json j;
+  j["source"] = r->source;
+  j["pixel"] = {x, y};
+  j["texel"] = r->texel ? nlohmann::json({r->texel->x, r->texel->y}) : nlohmann::json(nullptr);
+  j["channels"] = r->channels;
+  j["value"] = nlohmann::json::array();
+  for (int k = 0; k < std::min(r->channels, 4); ++k) j["value"].push_back(r->value[k]);
+  j["linear_depth"] = r->linear_depth ? nlohmann::json(*r->linear_depth) : nlohmann::json(nullptr);
+  j["text"] = readout_text(*r);
+  return write_file_whole(path, j.dump(2) + "\n");
+}
+
+Result<glm::vec2> resource_range(SandboxController& c) {
+  const ViewerSettings& v = c.viewer();
+  if (v.resource.empty()) return make_error("auto range: no resource is viewed");
+  gl::Texture* t = c.session().executor().resource(v.resource);
+  if (!t) return make_error("auto range: '" + v.resource + "' is not produced by the current graph");
+  const std::vector<float> texels = t->read();
+  const int n = t->info().channels;
+  const int ch = std::clamp(v.channel, 0, n - 1);
+  const bool depth = v.linearize_depth && screen_depth(*t, c);
+  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  for (size_t i = static_cast<size_t>(ch); i < texels.size(); i += static_cast<size_t>(n)) {
+    float x = texels[i];
+    if (!std::isfinite(x)) continue;
+    if (depth) {
+      if (x >= 1.0f) continue;  // background at the far plane
+      x = linear_depth(x, c.camera().near_plane, c.camera().far_plane);
+    }
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  if (!(lo <= hi)) return make_error("auto range: '" + v.resource + "' holds no finite value");
+  return glm::vec2(lo, hi);
+}
+
+Status apply_auto_range(SandboxController& c) {
+  Result<glm::vec2> r = resource_range(c);
+  if (!r) return r.error();
+  const float pad = r->y > r->x ? 0.0f : 1e-6f * std::max(1.0f, std::abs(r->x));
+  c.viewer().min = r->x - pad;
+  c.viewer().max = r->y + pad;
+  return {};
+}
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,42 @@
+#pragma once
+// The pixel inspector (RenderDoc-style): the value under a frame pixel of whatever is shown
+// there (the viewed resource, full or inset, or the final image: the colour of the compare side
+// under it, or |a - b| in the error view), through the same mapping the composer draws with
+// (view_mapping.h: zoom, pan, aspect); and the auto range of the viewed resource.
+//
+//   auto r = inspect_pixel(controller, {x, y});   // frame pixel, origin top-left
+//   if (r && r->texel) show(r->source, *r->texel, r->value);
+#include <array>
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "sandbox/controller.h"
+
+namespace penumbra::sandbox {
+
+struct PixelReadout {
+  std::string source;                 // resource name, "color (A)", "color (B)" or "|a - b|"
+  glm::ivec2 pixel{0};                // frame pixel, origin top-left
+  std::optional<glm::ivec2> texel;    // GL texel (origin bottom-left); none outside the image
+  int channels = 0;
+  std::array<float, 4> value{};       // as stored
+  std::optional<float> linear_depth;  // screen depth as view distance (world units)
+};
+
+Result<PixelReadout> inspect_pixel(SandboxController& c, glm::ivec2 pixel);
+// "shadow_mask (120, 45) = 0.25" / "color (A) (3, 4) = 0.51 0.48 0.40 1"; "" outside the image.
+std::string readout_text(const PixelReadout& r);
+
+// The readout as JSON {"source", "pixel", "texel" (null outside), "channels", "value": [...],
+// "linear_depth" (screen depth only)} into `path` (the scripts' `inspect` step).
+Status write_inspection(SandboxController& c, int x, int y, const std::string& path);
+
+// Min and max of the viewed resource's channel (view distance for screen depth; texels at the
+// far plane and non-finite ones skipped); an error when nothing is viewed.
+Result<glm::vec2> resource_range(SandboxController& c);
+// resource_range into the viewer's min/max (a flat resource gets a range of 1e-6 around it).
+Status apply_auto_range(SandboxController& c);
+
+}  // namespace penumbra::sandbox

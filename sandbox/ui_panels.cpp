@@ -1,0 +1,397 @@
+#include "sandbox/ui_panels.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "sandbox/compare_metrics.h"
+#include "sandbox/graph_view.h"
+#include "sandbox/inspector.h"
+#include "sandbox/param_applicability.h"
+#include "sandbox/viewport_overlay.h"
+#include "sandbox/widget_spec.h"
+#include "metrics/heat_map.h"
+#include "scene/builtin_scenes.h"
+
+namespace penumbra::sandbox {
+
+namespace {
+
+const ImVec4 kGrey(0.5f, 0.5f, 0.5f, 1.0f);
+const ImVec4 kRed(1.0f, 0.35f, 0.3f, 1.0f);
+
+void tooltip(const std::string& text) {
+  if (!text.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+}
+
+std::string mib(std::uint64_t bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f MiB", double(bytes) / (1024.0 * 1024.0));
+  return buf;
+}
+
+// Widgets ignore returned Statuses on purpose: the controller shows every error in message().
+
+// One parameter: the widget its description asks for, then a reset button.
+// Parameters with no effect under the current settings are disabled, the reason in the tooltip.
+void parameter_widget(SandboxController& c, const graph::ParamDesc& d) {
+  const WidgetSpec w = widget_for(d);
+  const graph::ParameterSet& params = c.session().params();
+  const Applicability a = param_applicability(d, params, c.session().graph(), c.session().plan());
+  ImGui::PushID(d.name.c_str());
+  if (!a.applies) ImGui::BeginDisabled();
+  switch (w.kind) {
+    case WidgetKind::checkbox: {
+      bool v = params.get_bool(d.name);
+      if (ImGui::Checkbox(w.label.c_str(), &v)) (void)c.set_param_value(d.name, v);
+      break;
+    }
+    case WidgetKind::slider_int:
+    case WidgetKind::drag_int: {
+      int v = params.get_int(d.name);
+      bool changed = w.kind == WidgetKind::slider_int
+                         ? ImGui::SliderInt(w.label.c_str(), &v, int(w.min), int(w.max))
+                         : ImGui::DragInt(w.label.c_str(), &v, float(w.drag_speed));
+      // Only valid values are offered: a step (odd sizes) snaps to the nearest valid one.
+      v = valid_int_value(d, v);
+      // Structural ones recompile on every step of a drag: compiling is CPU-cheap and the pool
+      // hands the same textures back.
+      if (changed && v != params.get_int(d.name)) (void)c.set_param_value(d.name, v);
+      break;
+    }
+    case WidgetKind::slider_float:
+    case WidgetKind::drag_float: {
+      float v = static_cast<float>(params.get_real(d.name));
+      bool changed = w.kind == WidgetKind::slider_float
+                         ? ImGui::SliderFloat(w.label.c_str(), &v, float(w.min), float(w.max), "%.4g")
+                         : ImGui::DragFloat(w.label.c_str(), &v, float(w.drag_speed), 0.0f, 0.0f, "%.4g");
+      if (changed) (void)c.set_param_value(d.name, double(v));
+      break;
+    }
+    case WidgetKind::combo: {
+      std::string current = params.get_enum(d.name);
+      if (ImGui::BeginCombo(w.label.c_str(), current.c_str())) {
+        for (const std::string& o : w.options)
+          if (ImGui::Selectable(o.c_str(), o == current)) (void)c.set_param_value(d.name, o);
+        ImGui::EndCombo();
+      }
+      break;
+    }
+  }
+  if (!a.applies) {
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+      ImGui::SetTooltip("%s\n\n%s", a.reason.c_str(), w.tooltip.c_str());
+  } else {
+    tooltip(w.tooltip);
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("reset")) (void)c.reset_param(d.name);
+  tooltip("back to the default " + graph::param_value_to_string(d.default_value));
+  ImGui::PopID();
+}
+
+void scene_panel(SandboxController& c, UiState& ui) {
+  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (ImGui::BeginCombo("scene", c.scene_name().c_str())) {
+    for (const std::string& n : scene::builtin_scene_names())
+      if (ImGui::Selectable(n.c_str(), n == c.scene_name())) (void)c.load_scene(n);
+    ImGui::EndCombo();
+  }
+  ImGui::InputText("glTF", ui.scene_path, sizeof ui.scene_path);
+  ImGui::SameLine();
+  if (ImGui::Button("open")) (void)c.load_scene(ui.scene_path);
+  tooltip("load a .gltf/.glb file; on failure the current scene stays");
+  bool ground = c.staging().ground;
+  if (ImGui::Checkbox("ground plane", &ground)) (void)c.set_ground(ground);
+  tooltip(c.ground_added() ? "a plane was added under the model (it has no floor of its own); reloads the scene"
+                           : "adds a plane under models that have no floor of their own (reloads the scene); "
+                             "this scene has its own or the switch is off");
+  const auto& cams = c.file_cameras();
+  const scene::CameraChoice& choice = c.staging().camera;
+  std::string current = choice.kind == scene::CameraChoice::Kind::scene ? "default" : "fitted to the model";
+  if (choice.kind == scene::CameraChoice::Kind::file)
+    current = "file: " + (choice.file_camera.empty() ? std::string("0") : choice.file_camera);
+  if (ImGui::BeginCombo("view", current.c_str())) {
+    if (ImGui::Selectable("fitted to the model", choice.kind != scene::CameraChoice::Kind::file))
+      (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::fitted});
+    for (size_t i = 0; i < cams.size(); ++i) {
+      const std::string label = "file: " + std::to_string(i) + (cams[i].name.empty() ? "" : " " + cams[i].name);
+      if (ImGui::Selectable(label.c_str(), choice.kind == scene::CameraChoice::Kind::file &&
+                                               choice.file_camera == std::to_string(i)))
+        (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::file, .file_camera = std::to_string(i)});
+    }
+    ImGui::EndCombo();
+  }
+  tooltip(cams.empty() ? "the camera fitted to the model's bounds (this scene places no camera of its own)"
+                       : "the camera fitted to the model's bounds, or one the glTF file places");
+  const scene::Camera& cam = c.camera();
+  ImGui::TextDisabled("camera (%.2f, %.2f, %.2f) yaw %.0f pitch %.0f deg", cam.position.x, cam.position.y,
+                      cam.position.z, glm::degrees(cam.yaw), glm::degrees(cam.pitch));
+}
+
+void light_panel(SandboxController& c) {
+  if (!ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  scene::Light& l = c.light();
+  int type = static_cast<int>(l.type);  // the combo lists LightType in declaration order
+  if (ImGui::Combo("type", &type, "directional\0spot\0point\0")) c.set_light_type(static_cast<scene::LightType>(type));
+  if (l.type == scene::LightType::point)
+    tooltip("light in every direction from its position; only esm renders it inside the scene bounds "
+            "(six shadow-map faces), one-map techniques need it outside them");
+  glm::vec3 dir = l.direction;
+  if (ImGui::DragFloat3("direction", &dir.x, 0.01f, -1.0f, 1.0f)) (void)c.set_light_direction(dir);
+  ImGui::DragFloat3("position", &l.position.x, 0.05f);
+  tooltip(l.type == scene::LightType::point ? "emitter sphere centre, world units" : "emitter disk centre, world units");
+  float size = l.size;
+  if (ImGui::DragFloat("size", &size, 0.005f, 0.0f, 100.0f, "%.3f")) (void)c.set_light_size(std::max(size, 0.0f));
+  tooltip(l.type == scene::LightType::point ? "emitter sphere DIAMETER, world units" : "emitter disk DIAMETER, world units");
+  if (l.type == scene::LightType::spot) {
+    float deg = glm::degrees(l.spot_angle);
+    if (ImGui::SliderFloat("spot angle", &deg, 1.0f, 89.0f, "%.0f deg")) l.spot_angle = glm::radians(deg);
+  }
+  static const int kSizes[] = {256, 512, 1024, 2048, 4096};
+  int shadow = c.session().settings().shadow_size;
+  if (ImGui::BeginCombo("shadow map", (std::to_string(shadow) + " texels").c_str())) {
+    for (int s : kSizes)
+      if (ImGui::Selectable(std::to_string(s).c_str(), s == shadow)) (void)c.set_shadow_size(s);
+    ImGui::EndCombo();
+  }
+  if (ImGui::Button("light = view direction (Space)")) (void)c.align_light_with_camera();
+}
+
+void technique_panel(SandboxController& c, UiState& ui) {
+  if (!ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  technique::TechniqueSession& s = c.session();
+  if (ImGui::BeginCombo("technique", s.technique().c_str())) {
+    for (const std::string& n : c.technique_names()) {
+      if (ImGui::Selectable(n.c_str(), n == s.technique())) (void)c.set_technique(n);
+      tooltip(c.technique_description(n));
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::TextWrapped("%s", s.graph().description.c_str());
+  for (const graph::ParamDesc& d : s.params().descs()) parameter_widget(c, d);
+  if (ImGui::Button("reset all")) (void)c.reset_param("all");
+  ImGui::SameLine();
+  ImGui::TextDisabled("compiles: %d", s.compile_count());
+  ImGui::InputText("preset", ui.preset_path, sizeof ui.preset_path);
+  if (ImGui::Button("save preset")) {
+    Status st = c.note(c.save_preset(ui.preset_path));
+    if (st) ui.post(std::string("saved ") + ui.preset_path, ImGui::GetTime());
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("load preset")) {
+    Status st = c.load_preset(ui.preset_path);
+    if (st) ui.post(std::string("loaded ") + ui.preset_path, ImGui::GetTime());
+  }
+}
+
+void graph_panel(SandboxController& c, UiState& ui) {
+  if (!ImGui::CollapsingHeader("Graph", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  technique::TechniqueSession& s = c.session();
+  const graph::CompiledPlan& plan = s.plan();
+  draw_graph_view(c, ui.graph_view);
+  ImGui::TextDisabled("times: %s", s.executor().timing_mode() == exec::TimingMode::gpu_timestamps ? "GPU timestamps"
+                                                                                                   : "glFinish + CPU clock");
+  ImGui::Text("memory: naive %s, assigned %s", mib(plan.memory.naive_bytes).c_str(),
+              mib(plan.memory.assigned_bytes).c_str());
+  ImGui::Text("pool: %zu textures, %s", s.pool().texture_count(), mib(s.pool().bytes()).c_str());
+  bool no_reuse = s.compile_options().no_reuse;
+  if (ImGui::Checkbox("no reuse", &no_reuse)) (void)c.set_no_reuse(no_reuse);
+  bool extended = s.compile_options().extended_lifetimes;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("extended lifetimes", &extended)) (void)c.set_extended_lifetimes(extended);
+  bool immediate = s.executor().options().immediate;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("immediate", &immediate)) (void)c.set_immediate(immediate);
+  tooltip("glFinish and a GL error check after every pass");
+}
+
+// The legend of the viewer's colour map: the gradient from min to max, labelled.
+void colour_bar(const ViewerSettings& v) {
+  if (v.resource.empty() || v.map == ViewerSettings::Map::color) return;
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float w = ImGui::GetContentRegionAvail().x * 0.9f, h = 12.0f;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  constexpr int kSteps = 32;
+  auto colour = [&](float t) -> ImU32 {
+    if (v.map == ViewerSettings::Map::grey) {
+      const int g = static_cast<int>(t * 255.0f);
+      return IM_COL32(g, g, g, 255);
+    }
+    const glm::u8vec3 c = metrics::heat_color(t);
+    return IM_COL32(c.r, c.g, c.b, 255);
+  };
+  for (int i = 0; i < kSteps; ++i) {
+    const float t0 = float(i) / kSteps, t1 = float(i + 1) / kSteps;
+    dl->AddRectFilledMultiColor(ImVec2(at.x + t0 * w, at.y), ImVec2(at.x + t1 * w, at.y + h), colour(t0), colour(t1),
+                                colour(t1), colour(t0));
+  }
+  ImGui::Dummy(ImVec2(w, h));
+  ImGui::Text("%.4g", v.min);
+  ImGui::SameLine(w * 0.5f - 20.0f);
+  ImGui::Text("%.4g", 0.5 * (double(v.min) + double(v.max)));
+  ImGui::SameLine(std::max(w - 50.0f, 0.0f));
+  ImGui::Text("%.4g", v.max);
+}
+
+void viewer_panel(SandboxController& c) {
+  if (!ImGui::CollapsingHeader("Resource viewer")) return;
+  ViewerSettings& v = c.viewer();
+  const char* shown = v.resource.empty() ? "(off)" : v.resource.c_str();
+  if (ImGui::BeginCombo("resource", shown)) {
+    if (ImGui::Selectable("(off)", v.resource.empty())) (void)c.view_resource("");
+    for (const std::string& n : c.session().executor().resource_names())
+      if (ImGui::Selectable(n.c_str(), n == v.resource)) (void)c.view_resource(n);
+    ImGui::EndCombo();
+  }
+  int map = static_cast<int>(v.map);
+  if (ImGui::Combo("colour map", &map, "colour\0grey\0heat\0")) v.map = static_cast<ViewerSettings::Map>(map);
+  int place = static_cast<int>(v.placement);
+  if (ImGui::Combo("placement", &place, "full screen\0inset\0"))
+    v.placement = static_cast<ViewerSettings::Placement>(place);
+  ImGui::DragFloatRange2("range", &v.min, &v.max, 0.005f, 0.0f, 0.0f, "min %.4g", "max %.4g");
+  if (ImGui::Button("auto range")) (void)c.note(apply_auto_range(c));
+  tooltip("min/max of the viewed channel (view distance for screen depth, background skipped)");
+  ImGui::SameLine();
+  ImGui::Checkbox("follow", &v.auto_range);
+  tooltip("keep the range at the resource's min/max (every 15 frames)");
+  colour_bar(v);
+  ImGui::SliderInt("channel", &v.channel, 0, 3);
+  float zoom = v.zoom.zoom;
+  if (ImGui::SliderFloat("zoom", &zoom, 1.0f, kMaxZoom, "%.2gx", ImGuiSliderFlags_Logarithmic)) {
+    v.zoom.zoom = zoom;
+    v.zoom = clamped(v.zoom);
+  }
+  tooltip("mouse wheel over the view zooms about the cursor, middle-drag pans; the compare split's sides zoom together");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("1:1")) v.zoom = {};
+  ImGui::Checkbox("linearise depth", &v.linearize_depth);
+  SandboxController::DebugViews& dv = c.debug_views();
+  ImGui::Checkbox("light frustum", &dv.light_frustum);
+  tooltip("the shadow map's frustum (yellow) and the emitter disk with its direction (orange), drawn over the scene");
+  ImGui::SameLine();
+  ImGui::Checkbox("blocker search", &dv.blocker_region);
+  ImGui::SameLine();
+  ImGui::Checkbox("texel density", &dv.texel_density);
+  tooltip("shadow-map texels per frame pixel on the receivers, log2 heat: blue 1/16 (blocky), green 1, red 16 (aliased)");
+  tooltip("for the pixel under the cursor: its cone to the emitter in the scene, and (viewing a shadow-map-sized "
+          "resource) the region of the map where its blockers can be");
+  tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
+}
+
+void compare_panel(SandboxController& c, UiState& ui) {
+  if (!ImGui::CollapsingHeader("Compare")) return;
+  CompareState& cs = c.compare();
+  bool on = cs.enabled;
+  if (ImGui::Checkbox("compare", &on)) (void)c.set_compare(on);
+  tooltip("split screen: left = active technique, right = the other one (its reference)");
+  if (ImGui::BeginCombo("against", cs.with.empty() ? "(default)" : cs.with.c_str())) {
+    for (const std::string& n : c.technique_names())
+      if (ImGui::Selectable(n.c_str(), n == cs.with)) (void)c.set_compare(true, n);
+    ImGui::EndCombo();
+  }
+  if (!cs.enabled) return;
+  int view = static_cast<int>(cs.view);
+  if (ImGui::Combo("view", &view, "split\0error heat map\0")) (void)c.set_compare_view(static_cast<CompareState::View>(view));
+  if (cs.view == CompareState::View::split) ImGui::SliderFloat("split", &cs.split, 0.0f, 1.0f);
+  else ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "|a-b| = %.2f is white");
+  ImGui::SliderInt("stats every", &cs.stats_every, 1, 120, "%d frames");
+  const std::string progress = progress_text(c);
+  if (!progress.empty()) {
+    const bool done = progress_complete(c);
+    ImGui::TextColored(done ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", progress.c_str());
+    if (!done) tooltip("the RMSE means little until the technique has converged");
+  }
+  if (cs.stats) {
+    ImGui::Text("RMSE %.4f   penumbra RMSE %s", cs.stats->rmse, penumbra_rmse_text(*cs.stats).c_str());
+    tooltip("penumbra RMSE: over pixels where the right-hand side (the reference) is in 0.02..0.98; "
+            "n/a when it has none (e.g. against hard shadows)");
+    ImGui::Text("MAE %.4f   max %.3f   %zu px (%zu penumbra)", cs.stats->mae, cs.stats->max_error,
+                cs.stats->pixels, cs.stats->penumbra_pixels);
+  }
+  if (!cs.rmse_history.empty()) {
+    float top = 0.0f;
+    for (float v : cs.rmse_history) top = std::max(top, v);
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "RMSE history, max %.4f", top);
+    ImGui::PlotLines("##rmse", cs.rmse_history.data(), static_cast<int>(cs.rmse_history.size()), 0, overlay, 0.0f,
+                     std::max(top, 1e-6f), ImVec2(-1, 40));
+  }
+  ImGui::InputText("metrics file", ui.metrics_path, sizeof ui.metrics_path);
+  if (ImGui::Button("export metrics")) {
+    Status st = c.note(write_metrics(c, ui.metrics_path));
+    if (st) ui.post(std::string("wrote ") + ui.metrics_path, ImGui::GetTime());
+  }
+  tooltip("compare statistics, reference progress and per-pass times; .json or .csv");
+  if (!cs.stats_error.empty()) ImGui::TextColored(kRed, "%s", cs.stats_error.c_str());
+}
+
+// Messages have a fixed place of fixed height at the top of the panel: they wrap inside it and
+// scroll when long, so no widget below moves when one appears. Errors stay until the next
+// action succeeds; transient notes fade.
+void messages_panel(SandboxController& c, UiState& ui) {
+  if (ImGui::Button("screenshot (F12)")) ui.screenshot_requested = true;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##shot", ui.screenshot_path, sizeof ui.screenshot_path);
+  const float lines = 4.0f;
+  ImGui::BeginChild("##messages", ImVec2(0, lines * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true);
+  ImGui::PushTextWrapPos(0.0f);
+  bool any = false;
+  if (!c.message().empty()) {
+    ImGui::TextColored(kRed, "%s", c.message().c_str());
+    any = true;
+  }
+  if (!c.refused().empty() && c.refused() != c.message()) {
+    ImGui::TextColored(kRed, "frame refused: %s", c.refused().c_str());
+    any = true;
+  }
+  for (const Error& e : c.shader_errors()) {
+    ImGui::TextColored(kRed, "%s", e.to_string().c_str());
+    if (!e.details.empty()) tooltip(e.details);
+    any = true;
+  }
+  const float alpha = ui.note_alpha(ImGui::GetTime());
+  if (alpha > 0.0f) {
+    ImGui::TextColored(ImVec4(0.8f, 0.9f, 0.8f, alpha), "%s", ui.note.c_str());
+    any = true;
+  }
+  if (!any) ImGui::TextDisabled("no messages");
+  ImGui::PopTextWrapPos();
+  ImGui::EndChild();
+}
+
+}  // namespace
+
+float UiState::note_alpha(double now) const {
+  if (note.empty()) return 0.0f;
+  const double age = now - note_time;
+  if (age <= kNoteSeconds) return 1.0f;
+  return static_cast<float>(std::max(0.0, 1.0 - (age - kNoteSeconds) / kFadeSeconds));
+}
+
+void draw_sandbox_ui(SandboxController& c, UiState& ui, const Layout& layout) {
+  ImGui::SetNextWindowPos(ImVec2(float(layout.panel.x), float(layout.panel.y)));
+  ImGui::SetNextWindowSize(ImVec2(float(layout.panel.w), float(layout.panel.h)));
+  ImGui::Begin("Penumbra", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+  // Widgets take 45% of the panel: long parameter names and the reset buttons stay readable.
+  ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.45f);
+  ImGui::Text("%.1f fps  frame %dx%d", ImGui::GetIO().Framerate, c.width(), c.height());
+  messages_panel(c, ui);
+  scene_panel(c, ui);
+  light_panel(c);
+  technique_panel(c, ui);
+  graph_panel(c, ui);
+  viewer_panel(c);
+  compare_panel(c, ui);
+  ImGui::PopItemWidth();
+  ImGui::End();
+  draw_panel_divider(ui.panel_width, layout);
+  draw_viewport_overlay(c, layout);
+}
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,38 @@
+#pragma once
+// The ImGui panels. Every widget calls a SandboxController method (the same ones script steps
+// call); the only state kept here is what the user is typing.
+#include <string>
+
+#include "sandbox/controller.h"
+#include "sandbox/graph_view.h"
+#include "sandbox/layout.h"
+
+namespace penumbra::sandbox {
+
+struct UiState {
+  char scene_path[512] = "";
+  char preset_path[512] = "preset.json";
+  char screenshot_path[512] = "penumbra-screenshot.png";
+  char metrics_path[512] = "penumbra-metrics.json";
+  bool screenshot_requested = false;  // set by the button, served by the host after rendering
+  int panel_width = kDefaultPanelWidth;  // pixels; the divider drags it
+  GraphViewCache graph_view;             // the plan's dot layout, redone when the plan changes
+
+  // A transient note ("saved x.png"): shown for kNoteSeconds, then fades out over kFadeSeconds.
+  static constexpr double kNoteSeconds = 4.0, kFadeSeconds = 1.5;
+  void post(std::string text, double now) {
+    note = std::move(text);
+    note_time = now;
+  }
+  // 1 while fresh, falling to 0 as it fades; 0 when there is none.
+  float note_alpha(double now) const;
+  std::string note;
+  double note_time = 0.0;
+};
+
+// The panel (left, full height), the divider that resizes it, and the overlays on the viewport
+// (compare labels and split divider, a refused frame's reason). Nothing is drawn over the
+// viewport but those overlays.
+void draw_sandbox_ui(SandboxController& controller, UiState& ui, const Layout& layout);
+
+}  // namespace penumbra::sandbox

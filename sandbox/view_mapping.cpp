@@ -1,0 +1,56 @@
+#include "sandbox/view_mapping.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penumbra::sandbox {
+
+ViewZoom clamped(ViewZoom z) {
+  z.zoom = std::clamp(std::isfinite(z.zoom) ? z.zoom : 1.0f, 1.0f, kMaxZoom);
+  const float half = 0.5f / z.zoom;
+  for (int i = 0; i < 2; ++i) z.center[i] = std::clamp(std::isfinite(z.center[i]) ? z.center[i] : 0.5f, half, 1.0f - half);
+  return z;
+}
+
+ViewZoom zoom_about(ViewZoom z, float factor, glm::vec2 anchor) {
+  const glm::vec2 uv = z.center + (anchor - 0.5f) / z.zoom;
+  z.zoom = std::clamp(z.zoom * factor, 1.0f, kMaxZoom);
+  z.center = uv - (anchor - 0.5f) / z.zoom;
+  return clamped(z);
+}
+
+ViewZoom pan_by(ViewZoom z, glm::vec2 delta) {
+  z.center -= delta / z.zoom;
+  return clamped(z);
+}
+
+glm::vec4 zoomed_uv_rect(const ViewZoom& z, const glm::vec4& screen) {
+  return {z.center.x + (screen.x - 0.5f) / z.zoom, z.center.y + (screen.y - 0.5f) / z.zoom, screen.z / z.zoom,
+          screen.w / z.zoom};
+}
+
+glm::ivec4 fitted_rect(int frame_w, int frame_h, int tex_w, int tex_h) {
+  if (tex_w <= 0 || tex_h <= 0 || frame_w <= 0 || frame_h <= 0) return {0, 0, std::max(frame_w, 0), std::max(frame_h, 0)};
+  const double s = std::min(double(frame_w) / tex_w, double(frame_h) / tex_h);
+  const int w = std::max(1, static_cast<int>(std::lround(tex_w * s)));
+  const int h = std::max(1, static_cast<int>(std::lround(tex_h * s)));
+  return {(frame_w - w) / 2, (frame_h - h) / 2, w, h};
+}
+
+glm::ivec4 inset_rect(int frame_w, int frame_h, int tex_w, int tex_h) {
+  const int w = std::max(frame_w / 3, 1);
+  int h = std::max(static_cast<int>(std::lround(float(w) * tex_h / std::max(tex_w, 1))), 1);
+  h = std::min(h, frame_h);
+  return {frame_w - w - 8, 8, w, h};
+}
+
+std::optional<glm::ivec2> pixel_to_texel(glm::ivec2 pixel, const glm::ivec4& rect, const glm::vec4& uv_rect,
+                                         int tex_w, int tex_h) {
+  if (pixel.x < rect.x || pixel.y < rect.y || pixel.x >= rect.x + rect.z || pixel.y >= rect.y + rect.w) return std::nullopt;
+  const glm::vec2 f((pixel.x - rect.x + 0.5f) / rect.z, (pixel.y - rect.y + 0.5f) / rect.w);
+  const glm::vec2 uv(uv_rect.x + f.x * uv_rect.z, uv_rect.y + f.y * uv_rect.w);
+  if (uv.x < 0.0f || uv.y < 0.0f || uv.x >= 1.0f || uv.y >= 1.0f) return std::nullopt;
+  return glm::ivec2(std::min(static_cast<int>(uv.x * tex_w), tex_w - 1), std::min(static_cast<int>(uv.y * tex_h), tex_h - 1));
+}
+
+}  // namespace penumbra::sandbox

@@ -1,0 +1,171 @@
+#include "sandbox/viewport_overlay.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "sandbox/compare_metrics.h"
+#include "sandbox/inspector.h"
+#include "sandbox/shadow_debug.h"
+#include "technique/frame_graph.h"
+
+namespace penumbra::sandbox {
+
+namespace {
+
+constexpr ImGuiWindowFlags kBare = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoNav;
+
+// An invisible button filling a bare window at `x`, `y` of `w` x `h`; returns the horizontal
+// drag this frame (0 when not dragged) and whether it is hovered or held.
+float drag_handle(const char* id, float x, float y, float w, float h, bool* hot) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
+  ImGui::Begin(id, nullptr, kBare);
+  ImGui::InvisibleButton("##handle", ImVec2(w, h));
+  const bool active = ImGui::IsItemActive();
+  *hot = active || ImGui::IsItemHovered();
+  if (*hot) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  ImGui::End();
+  ImGui::PopStyleVar(2);
+  return active ? ImGui::GetIO().MouseDelta.x : 0.0f;
+}
+
+void label(ImDrawList* dl, ImVec2 at, const std::string& text, float wrap) {
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+  dl->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2), IM_COL32(0, 0, 0, 170), 3.0f);
+  dl->AddText(nullptr, 0.0f, at, IM_COL32(240, 240, 240, 255), text.c_str(), nullptr, wrap);
+}
+
+// The light's frustum (yellow) and emitter (orange), projected over the frame.
+void draw_light_frustum(SandboxController& c, ImDrawList* dl, float x0, float y0) {
+  if (!c.session().has_scene()) return;
+  const scene::ShadowFrustum f = scene::shadow_frustum(c.light(), c.session().scene().bounds);
+  const ImVec2 o(x0, y0);
+  for (const auto& [a, b] : project_segments(frustum_segments(f), c.camera(), c.width(), c.height()))
+    dl->AddLine(ImVec2(o.x + a.x, o.y + a.y), ImVec2(o.x + b.x, o.y + b.y), IM_COL32(255, 230, 80, 200), 1.5f);
+  for (const auto& [a, b] : project_segments(emitter_segments(c.light()), c.camera(), c.width(), c.height()))
+    dl->AddLine(ImVec2(o.x + a.x, o.y + a.y), ImVec2(o.x + b.x, o.y + b.y), IM_COL32(255, 140, 40, 255), 2.0f);
+}
+
+// The receiver under the cursor: its cone to the emitter in the scene and, when the viewer
+// shows a shadow-map-sized resource, the blocker-search region on it.
+void draw_blocker_region(SandboxController& c, ImDrawList* dl, float x0, float y0, int px, int py) {
+  gl::Texture* pos = c.session().executor().resource("gbuffer_position");
+  if (!pos || !c.session().has_scene() || pos->width() != c.width() || pos->height() != c.height()) return;
+  const ViewZoom& z = c.viewer().zoom;
+  const std::optional<glm::ivec2> t =
+      pixel_to_texel({px, c.height() - 1 - py}, {0, 0, c.width(), c.height()}, zoomed_uv_rect(z), pos->width(), pos->height());
+  if (!t) return;
+  float p[4] = {0, 0, 0, 0};
+  glGetTextureSubImage(pos->id(), 0, t->x, t->y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof p, p);
+  if (!(p[3] > 0.0f)) return;
+  const glm::vec3 receiver(p[0], p[1], p[2]);
+  const scene::Light& light = c.light();
+  std::vector<Segment> cone;
+  for (const glm::vec3& e : emitter_outline(light, 12)) cone.push_back({receiver, e});
+  for (const auto& [a, b] : project_segments(cone, c.camera(), c.width(), c.height()))
+    dl->AddLine(ImVec2(x0 + a.x, y0 + a.y), ImVec2(x0 + b.x, y0 + b.y), IM_COL32(80, 255, 200, 150), 1.0f);
+  const scene::ShadowFrustum f = scene::shadow_frustum(light, c.session().scene().bounds);
+  const std::vector<glm::vec2> region = blocker_search_region(receiver, light, f);
+  const ViewerSettings& v = c.viewer();
+  const int shadow = c.session().settings().shadow_size;
+  gl::Texture* shown = v.resource.empty() ? nullptr : c.session().executor().resource(v.resource);
+  if (region.empty() || !shown || shown->width() != shadow || shown->height() != shadow) return;
+  const bool full = v.placement == ViewerSettings::Placement::full;
+  const glm::ivec4 rect = full ? fitted_rect(c.width(), c.height(), shadow, shadow) : inset_rect(c.width(), c.height(), shadow, shadow);
+  const glm::vec4 uv = full ? zoomed_uv_rect(z) : glm::vec4(0, 0, 1, 1);
+  std::vector<ImVec2> poly;
+  for (const glm::vec2& q : region) {
+    const glm::vec2 f01((q.x - uv.x) / uv.z, (q.y - uv.y) / uv.w);
+    poly.push_back(ImVec2(x0 + rect.x + f01.x * rect.z, y0 + c.height() - (rect.y + f01.y * rect.w)));
+  }
+  dl->AddPolyline(poly.data(), static_cast<int>(poly.size()), IM_COL32(80, 255, 200, 255), ImDrawFlags_Closed, 2.0f);
+}
+
+}  // namespace
+
+std::string settings_label(const technique::TechniqueSession& session) {
+  std::string out = session.technique();
+  std::string changed;
+  for (const graph::ParamDesc& d : session.params().descs()) {
+    const graph::ParamValue* v = session.params().get(d.name);
+    if (v && *v != d.default_value) changed += " " + d.name + "=" + graph::param_value_to_string(*v);
+  }
+  return out + (changed.empty() ? "  (defaults)" : " " + changed);
+}
+
+void draw_panel_divider(int& panel_width, const Layout& layout) {
+  bool hot = false;
+  const float dx = drag_handle("##panel_divider", float(layout.divider.x), float(layout.divider.y),
+                               float(std::max(layout.divider.w, 1)), float(layout.divider.h), &hot);
+  if (dx != 0.0f) panel_width = layout.panel_width + static_cast<int>(dx);
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  dl->AddRectFilled(ImVec2(float(layout.divider.x), float(layout.divider.y)),
+                    ImVec2(float(layout.divider.x + layout.divider.w), float(layout.divider.y + layout.divider.h)),
+                    hot ? IM_COL32(90, 140, 220, 255) : IM_COL32(55, 58, 66, 255));
+}
+
+void draw_viewport_overlay(SandboxController& c, const Layout& layout) {
+  const Rect& vp = layout.viewport;
+  const float x0 = float(vp.x), y0 = float(vp.y);
+  const float w = float(std::min(c.width(), vp.w)), h = float(std::min(c.height(), vp.h));
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  // Nothing drawn here may spill onto the panel.
+  dl->PushClipRect(ImVec2(x0, y0), ImVec2(x0 + float(vp.w), y0 + float(vp.h)), false);
+  CompareState& cs = c.compare();
+  if (cs.enabled && c.secondary()) {
+    if (cs.view == CompareState::View::split) {
+      const float split_x = x0 + cs.split * float(c.width());
+      bool hot = false;
+      const float dx = drag_handle("##split_divider", split_x - 4.0f, y0, 8.0f, h, &hot);
+      if (dx != 0.0f && c.width() > 0) cs.split = std::clamp(cs.split + dx / float(c.width()), 0.0f, 1.0f);
+      dl->AddLine(ImVec2(split_x, y0), ImVec2(split_x, y0 + h), hot ? IM_COL32(120, 180, 255, 255) : IM_COL32(255, 255, 255, 200),
+                  hot ? 3.0f : 2.0f);
+      const float half = std::max(w * 0.5f - 16.0f, 80.0f);
+      label(dl, ImVec2(x0 + 8, y0 + 6), "A: " + settings_label(c.session()), std::max(std::min(half, split_x - x0 - 12), 60.0f));
+      const std::string right = "B: " + settings_label(*c.secondary());
+      // The statistics on the view itself, so window screenshots carry them.
+      if (cs.stats) {
+        char stats[160];
+        std::snprintf(stats, sizeof stats, "RMSE %.4f  penumbra %s  MAE %.4f  max %.3f", cs.stats->rmse,
+                      penumbra_rmse_text(*cs.stats).c_str(), cs.stats->mae, cs.stats->max_error);
+        std::string line = stats;
+        if (const std::string p = progress_text(c); !p.empty()) line += "  |  " + p;
+        label(dl, ImVec2(x0 + 8, y0 + 28), line, std::max(w - 16, 60.0f));
+      }
+      const float rw = std::min(ImGui::CalcTextSize(right.c_str()).x, half);
+      label(dl, ImVec2(x0 + w - rw - 8, y0 + 6), right, half);
+    } else {
+      label(dl, ImVec2(x0 + 8, y0 + 6),
+            "|A - B|  A: " + settings_label(c.session()) + "   B: " + settings_label(*c.secondary()), w - 16);
+    }
+  }
+  const ViewerSettings& v = c.viewer();
+  if (!v.resource.empty() && !c.session().executor().resource(v.resource))
+    label(dl, ImVec2(x0 + 8, y0 + h - 48), "viewed resource '" + v.resource + "' is not produced by the current graph",
+          std::max(w - 16, 60.0f));
+  if (v.zoom.zoom > 1.0f) {
+    char z[32];
+    std::snprintf(z, sizeof z, "zoom %.3gx", v.zoom.zoom);
+    label(dl, ImVec2(x0 + w - 90, y0 + h - 24), z, 90);
+  }
+  if (c.debug_views().light_frustum) draw_light_frustum(c, dl, x0, y0);
+  // The pixel inspector: the value under the cursor.
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const int px = int(mouse.x) - vp.x, py = int(mouse.y) - vp.y;
+  if (c.debug_views().blocker_region && px >= 0 && py >= 0 && px < int(w) && py < int(h) && c.frames() > 0)
+    draw_blocker_region(c, dl, x0, y0, px, py);
+  if (px >= 0 && py >= 0 && px < int(w) && py < int(h) && !ImGui::GetIO().WantCaptureMouse && c.frames() > 0)
+    if (Result<PixelReadout> r = inspect_pixel(c, {px, py}); r && r->texel)
+      label(dl, ImVec2(x0 + 8, y0 + h - 24), readout_text(*r), std::max(w - 110, 60.0f));
+  if (!c.refused().empty())
+    label(dl, ImVec2(x0 + 12, y0 + h * 0.5f - 20), "frame refused: " + c.refused(), std::max(w - 24, 60.0f));
+  dl->PopClipRect();
+}
+
+}  // namespace penumbra::sandbox
