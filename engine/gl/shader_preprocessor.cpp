@@ -8,28 +8,33 @@
 namespace penumbra::gl {
 namespace {
 
+// A `..` or an absolute path would tie the includer to one layout of the files, and the source
+// tree, the embedded table, share/penumbra/shaders and a plugin folder lay them out differently;
+// the include directories are the same in all of them.
+bool climbs_out(const std::string& name) {
+  std::filesystem::path p(name);
+  if (p.is_absolute() || p.has_root_name() || p.has_root_directory()) return true;
+  for (const auto& part : p)
+    if (part == "..") return true;
+  return false;
+}
+
+Error climbing_include(const std::string& name, const std::string& path, int line,
+                       const std::vector<std::string>& include_dirs) {
+  std::string dirs;
+  for (const std::string& dir : include_dirs) dirs += (dirs.empty() ? "" : ", ") + dir;
+  Error e = make_error("#include \"" + name + "\": name the file from an include directory (" + dirs +
+                       ") or next to " + path + "; '..' and absolute paths are not allowed");
+  e.file = path;
+  e.line = line;
+  return e;
+}
+
 struct Expander {
   const ShaderFileSystem& files;
   PreprocessedShader out;
   std::set<std::string> pasted;
   std::vector<std::string> stack;  // include chain, to report cycles
-
-  // A `..` or an absolute path would tie the includer to one layout of the files, and the source
-  // tree, the embedded table, share/penumbra/shaders and a plugin folder lay them out differently;
-  // the include directories are the same in all of them.
-  static bool climbs_out(const std::string& name) {
-    std::filesystem::path p(name);
-    if (p.is_absolute() || p.has_root_name() || p.has_root_directory()) return true;
-    for (const auto& part : p)
-      if (part == "..") return true;
-    return false;
-  }
-
-  std::string include_dir_list() const {
-    std::string list;
-    for (const std::string& dir : files.include_dirs()) list += (list.empty() ? "" : ", ") + dir;
-    return list;
-  }
 
   // Finds `name` next to `from`, then in the include directories.
   std::string resolve(const std::string& from, const std::string& name) const {
@@ -68,14 +73,7 @@ struct Expander {
       }
       if (std::regex_match(line, m, include_re)) {
         std::string name = m[1];
-        if (climbs_out(name)) {
-          Error e = make_error("#include \"" + name + "\": name the file from an include directory (" +
-                               include_dir_list() + ") or next to " + path + "; '..' and absolute paths " +
-                               "are not allowed");
-          e.file = path;
-          e.line = line_no;
-          return e;
-        }
+        if (climbs_out(name)) return climbing_include(name, path, line_no, files.include_dirs());
         std::string resolved = resolve(path, name);
         if (resolved.empty()) {
           Error e = make_error("#include \"" + name + "\" not found (looked next to " + path +
