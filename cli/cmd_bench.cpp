@@ -6,6 +6,8 @@
 #include <fstream>
 
 #include "measurement/bench_report.h"
+#include "gl/context.h"
+#include "measurement/memory_peaks.h"
 #include "cli/command.h"
 #include "util/file_write.h"
 #include "cli/context_option.h"
@@ -30,6 +32,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"warmup", true, false, "N", "frames rendered before measuring (default 10)"},
     {"set", true, true, "k=v", "set a parameter of every technique that has it"},
     {"json", true, false, "OUT.json", "write the results as JSON"},
+    {"no-peaks", false, false, "", "skip measuring the copy and texture-fetch peaks (GB/s and % of peak stay 0)"},
     context_option_spec(),
     plugin_dir_option_spec(),
 });
@@ -43,6 +46,7 @@ struct BenchOptions {
   std::vector<int> shadow_sizes{2048};
   int frames = 200, warmup = 10;
   std::string json;
+  bool peaks = true;
 };
 
 Result<BenchOptions> parse_bench_options(const ParsedArgs& args, const technique::TechniqueRegistry& registry) {
@@ -91,6 +95,7 @@ Result<BenchOptions> parse_bench_options(const ParsedArgs& args, const technique
       *i.value = *n;
     }
   o.json = args.get("json").value_or("");
+  o.peaks = !args.has("no-peaks");
   o.sets = args.all("set");
   if (Status s = check_set_keys(registry, technique_names(o.techniques), o.sets); !s) return s.error();
   return o;
@@ -105,11 +110,15 @@ Status write_json(const std::string& path, const BenchReport& report) {
 int cmd_bench(const std::vector<std::string>& argv) {
   if (help_requested(argv))
     return print_help("penumbra bench [--techniques a,b:k=v,...] [--scenes s1,s2] [--size WxH,...] [--shadow-size N,...] "
-                                    "[--frames N] [--warmup N] [--set k=v]... [--json OUT.json]\n"
+                                    "[--frames N] [--warmup N] [--set k=v]... [--json OUT.json] [--no-peaks]\n"
                                     "                      [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]",
                                     "Renders warmup + N frames of each technique on each scene and prints the\n"
                                     "median time of every pass and their sum. On a GPU (EGL) passes are timed with\n"
-                                    "timestamp queries; on llvmpipe with glFinish + a CPU clock.",
+                                    "timestamp queries; on llvmpipe with glFinish + a CPU clock.\n"
+                                    "Beside each time: the bytes the pass moves (the plan's traffic model, as\n"
+                                    "`penumbra graph FILE --traffic` prints it), the bandwidth that achieves, and\n"
+                                    "its share of the copy peak measured once at the start (a 2 x 512 MiB buffer\n"
+                                    "copy on a GPU, 2 x 32 MiB in software), beside a texture-fetch peak.",
                                     kSpecs);
   auto args = parse_args(argv, kSpecs);
   if (!args) return fail(args.error());
@@ -129,7 +138,16 @@ int cmd_bench(const std::vector<std::string>& argv) {
   auto ctx = open_context(*args, "bench", &code, 16, 16, /*debug_output=*/false);
   if (!ctx) return code;
   exec::PassLibrary library = make_pass_library(registry);
-  BenchReport report{ctx->info().backend, ctx->info().renderer, "", {}};
+  BenchReport report{ctx->info().backend, ctx->info().renderer, "", {}, {}};
+  if (o.peaks) {
+    std::fprintf(stderr, "measuring the copy and texture-fetch peaks...\n");
+    report.peaks = measure_memory_peaks(/*gpu_timer=*/!gl::current_context_is_software());
+    if (!report.peaks.measured)
+      std::fprintf(stderr, "penumbra bench: peaks not measured (%s); timing the passes anyway\n",
+                   report.peaks.problem.c_str());
+  } else {
+    report.peaks.problem = "skipped (--no-peaks)";
+  }
   const size_t rows = scenes.size() * o.sizes.size() * o.shadow_sizes.size() * o.techniques.size();
   for (const scene::Scene& scene : scenes) {
     technique::TechniqueSession session(registry, library);
@@ -144,8 +162,12 @@ int cmd_bench(const std::vector<std::string>& argv) {
                        o.warmup, o.frames);
           if (Status s = select_technique(session, t, o.sets); !s) return fail(s.error());
           if (Status s = render_timed_frames(session, o.warmup, o.frames); !s) return fail(s.error());
-          BenchRow row{t.label, scene.name, width, height, shadow, pass_medians(session, o.frames), 0.0};
-          for (const PassMedian& p : row.passes) row.total_ms += p.ms;
+          BenchRow row{t.label, scene.name, width, height, shadow,
+                       bench_passes(pass_medians(session, o.frames), session.executor().plan()), 0.0, 0.0};
+          for (const BenchPass& p : row.passes) {
+            row.total_ms += p.ms;
+            if (!p.frame) row.technique_ms += p.ms;
+          }
           report.rows.push_back(std::move(row));
           report.timing = timing_mode_note(session);
         }

@@ -3,7 +3,6 @@
 
 #include <charconv>
 #include <exception>
-#include <fstream>
 #include <iostream>
 
 #include "graph/compiler.h"
@@ -12,13 +11,15 @@
 #include "cli/command.h"
 #include "pass_registry.h"
 #include "technique/frame_graph.h"
+#include "util/file_write.h"
 
 namespace penumbra::cli {
 
 namespace {
 
 const char* kHelp =
-    "usage: penumbra graph FILE.json [--plan] [--dot OUT.dot] [--screen WxH] [--shadow N]\n"
+    "usage: penumbra graph FILE.json [--plan] [--traffic] [--json OUT.json] [--dot OUT.dot]\n"
+    "                      [--screen WxH] [--shadow N]\n"
     "       penumbra graph --pass-types\n"
     "                      [--set k=v]... [--no-reuse] [--extended-lifetimes] [--frame | --no-frame]\n"
     "                      [--plugin-dir DIR]...\n"
@@ -27,7 +28,12 @@ const char* kHelp =
     "light or gbuffer_* without declaring them) is composed into the frame it runs in first.\n"
     "  --plan                print the compiled plan (order, culled, textures, lifetimes,\n"
     "                        barriers, memory)\n"
-    "  --dot OUT.dot         write the plan as Graphviz\n"
+    "  --traffic             print the bytes every pass reads and writes per execution\n"
+    "                        (each bound texture once at its size; docs/graph-format.md,\n"
+    "                        \"Traffic\"), in MB and bytes per screen pixel\n"
+    "  --json OUT.json       write the plan as JSON (passes, bindings, parameters, traffic,\n"
+    "                        physical resources, memory)\n"
+    "  --dot OUT.dot         write the plan as Graphviz (pass boxes show their traffic)\n"
     "  --screen WxH          screen size in pixels (default 1920x1080)\n"
     "  --shadow N            shadow map size in texels (default 2048)\n"
     "  --set k=v             set a graph parameter (repeatable)\n"
@@ -82,8 +88,8 @@ bool parse_positive(std::string_view text, int& out, int max) {
 }
 
 int run(const std::vector<std::string>& args) {
-  std::string file, dot_path;
-  bool print_plan = false, frame = false, no_frame = false;
+  std::string file, dot_path, json_path;
+  bool print_plan = false, print_traffic = false, frame = false, no_frame = false;
   graph::CompileSettings settings;
   graph::CompileOptions options;
   std::vector<std::string> sets, plugin_dirs;
@@ -106,6 +112,10 @@ int run(const std::vector<std::string>& args) {
       plugin_dirs.push_back(v);
     } else if (a == "--plan") {
       print_plan = true;
+    } else if (a == "--traffic") {
+      print_traffic = true;
+    } else if (a == "--json") {
+      if (!value(json_path)) return usage_error("--json needs OUT.json");
     } else if (a == "--frame") {
       frame = true;
     } else if (a == "--no-frame") {
@@ -175,16 +185,16 @@ int run(const std::vector<std::string>& args) {
     for (const auto& e : plan.errors()) std::cerr << e.to_string() << "\n";
     return 2;
   }
-  if (!dot_path.empty()) {
-    std::ofstream out(dot_path, std::ios::binary);
-    out << graph::to_dot(*plan);
-    if (!out) {
-      std::cerr << dot_path << ": cannot write\n";
-      return 2;
+  for (const auto& [path, text] : {std::pair{dot_path, graph::to_dot(*plan)}, std::pair{json_path, graph::to_json(*plan)}}) {
+    if (path.empty()) continue;
+    if (Status st = write_file_whole(path, text); !st) {
+      std::cerr << "penumbra graph: " << st.error().to_string() << "\n";
+      return st.error().exit_code();
     }
   }
   if (print_plan) std::cout << graph::to_text(*plan);
-  else
+  if (print_traffic) std::cout << graph::traffic_table(*plan);
+  if (!print_plan && !print_traffic)
     std::cout << file << ": ok" << (compose ? " (composed into the frame)" : "") << ", " << plan->passes.size() << " passes, " << plan->culled.size()
               << " culled, " << plan->physical.size() << " physical resources, "
               << plan->memory.assigned_bytes << " of " << plan->memory.naive_bytes << " B\n";

@@ -1,49 +1,100 @@
 #include "measurement/bench_report.h"
 
 #include <algorithm>
-
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
 namespace penumbra::measurement {
 
+double BenchPass::gb_per_s() const { return ms > 0.0 ? static_cast<double>(traffic.total()) / (ms * 1e-3) / 1e9 : 0.0; }
+
+std::vector<BenchPass> bench_passes(const std::vector<PassMedian>& medians, const graph::CompiledPlan& plan) {
+  std::vector<BenchPass> out;
+  for (const PassMedian& m : medians) {
+    BenchPass p{m.name, m.ms, {}, false};
+    auto planned = std::find_if(plan.passes.begin(), plan.passes.end(),
+                                [&](const graph::PlannedPass& q) { return q.name == m.name; });
+    if (planned != plan.passes.end()) {
+      p.traffic = planned->traffic;
+      p.frame = planned->frame;
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+namespace {
+
+// Share of the measured copy peak; 0 when no peak was measured.
+double percent_of_peak(const BenchPass& p, const MemoryPeaks& peaks) {
+  return peaks.measured && peaks.copy_gb_per_s > 0.0 ? 100.0 * p.gb_per_s() / peaks.copy_gb_per_s : 0.0;
+}
+
+nlohmann::ordered_json peaks_json(const MemoryPeaks& p) {
+  if (!p.measured) return {{"measured", false}, {"problem", p.problem}};
+  return {{"measured", true},
+          {"copy_buffer_bytes", p.copy_buffer_bytes},
+          {"copy_gb_per_s", p.copy_gb_per_s},
+          {"fetch_texture", std::to_string(p.fetch_width) + "x" + std::to_string(p.fetch_height) + " RGBA8"},
+          {"fetch_gtexels_per_s", p.fetch_gtexels_per_s},
+          {"fetch_gb_per_s", p.fetch_gb_per_s}};
+}
+
+}  // namespace
+
 std::string bench_report_json(const BenchReport& report) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (const BenchRow& r : report.rows) {
     nlohmann::ordered_json passes = nlohmann::ordered_json::array();
-    for (const PassMedian& p : r.passes) passes.push_back({{"name", p.name}, {"ms", p.ms}});
+    for (const BenchPass& p : r.passes)
+      passes.push_back({{"name", p.name},
+                        {"ms", p.ms},
+                        {"read_bytes", p.traffic.read_bytes},
+                        {"written_bytes", p.traffic.written_bytes},
+                        {"gb_per_s", p.gb_per_s()},
+                        {"percent_of_copy_peak", percent_of_peak(p, report.peaks)},
+                        {"frame", p.frame}});
     rows.push_back({{"technique", r.technique},
                     {"scene", r.scene},
                     {"size", std::to_string(r.width) + "x" + std::to_string(r.height)},
                     {"shadow_size", r.shadow_size},
                     {"passes", passes},
-                    {"total_ms", r.total_ms}});
+                    {"total_ms", r.total_ms},
+                    {"technique_ms", r.technique_ms}});
   }
-  nlohmann::ordered_json j = {{"device", report.device}, {"renderer", report.renderer}, {"rows", rows}};
+  nlohmann::ordered_json j = {{"device", report.device},
+                              {"renderer", report.renderer},
+                              {"timing", report.timing},
+                              {"peaks", peaks_json(report.peaks)},
+                              {"rows", rows}};
   return j.dump(2) + "\n";
 }
 
 std::string bench_report_table(const BenchReport& report) {
-  std::string out = "device: " + report.device + "\nrenderer: " + report.renderer + "\ntiming: " + report.timing + "\n";
+  std::string out = "device: " + report.device + "\nrenderer: " + report.renderer + "\ntiming: " + report.timing +
+                    "\nmeasured peaks: " + describe_memory_peaks(report.peaks) + "\n";
   char line[512];
   int width = 12;  // rows are labelled by technique and settings: as wide as the longest
   for (const BenchRow& r : report.rows) width = std::max(width, static_cast<int>(std::min<size_t>(r.technique.size(), 200)));
-  std::snprintf(line, sizeof line, "%-*s %-11s %-10s %6s  %-24s %10s\n", width, "technique", "scene", "size", "shadow",
-                "pass", "median ms");
+  std::snprintf(line, sizeof line, "%-*s %-11s %-10s %6s  %-24s %10s %9s %9s %7s\n", width, "technique", "scene", "size",
+                "shadow", "pass", "median us", "MB moved", "GB/s", "% peak");
   out += line;
   for (const BenchRow& r : report.rows) {
     const std::string size = std::to_string(r.width) + "x" + std::to_string(r.height);
     bool first = true;
-    for (const PassMedian& p : r.passes) {
-      std::snprintf(line, sizeof line, "%-*s %-11s %-10s %6s  %-24s %10.3f\n", width, first ? r.technique.c_str() : "",
-                    first ? r.scene.c_str() : "", first ? size.c_str() : "",
-                    first ? std::to_string(r.shadow_size).c_str() : "", p.name.c_str(), p.ms);
+    for (const BenchPass& p : r.passes) {
+      std::snprintf(line, sizeof line, "%-*s %-11s %-10s %6s  %-24s %10.1f %9.1f %9.1f %7.1f\n", width,
+                    first ? r.technique.c_str() : "", first ? r.scene.c_str() : "", first ? size.c_str() : "",
+                    first ? std::to_string(r.shadow_size).c_str() : "", p.name.c_str(), p.ms * 1e3,
+                    static_cast<double>(p.traffic.total()) / 1e6, p.gb_per_s(), percent_of_peak(p, report.peaks));
       out += line;
       first = false;
     }
-    std::snprintf(line, sizeof line, "%-*s %-11s %-10s %6s  %-24s %10.3f\n", width, "", "", "", "", "total", r.total_ms);
-    out += line;
+    for (const auto& [label, ms] : {std::pair{"technique passes", r.technique_ms}, std::pair{"total", r.total_ms}}) {
+      std::snprintf(line, sizeof line, "%-*s %-11s %-10s %6s  %-24s %10.1f\n", width, "", "", "", "", label, ms * 1e3);
+      out += line;
+    }
   }
   return out;
 }

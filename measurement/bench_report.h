@@ -1,25 +1,44 @@
 #pragma once
 // The results of `penumbra bench` as a table and as the JSON of docs/evaluation.md:
-//   {"device":..., "renderer":..., "rows":[{"technique":..., "scene":..., "size":...,
-//    "shadow_size":..., "passes":[{"name":..., "ms":...}], "total_ms":...}]}
+//   {"device":..., "renderer":..., "peaks": {"copy_gb_per_s":..., ...},
+//    "rows":[{"technique":..., "scene":..., "size":..., "shadow_size":...,
+//             "passes":[{"name":..., "ms":..., "read_bytes":..., "written_bytes":...,
+//                        "gb_per_s":..., "percent_of_copy_peak":..., "frame":...}],
+//             "total_ms":..., "technique_ms":...}]}
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "graph/plan.h"
 #include "measurement/eval_capture.h"
+#include "measurement/memory_peaks.h"
 
 namespace penumbra::measurement {
+
+struct BenchPass {
+  std::string name;
+  double ms = 0.0;                   // median
+  graph::PassTraffic traffic;        // bytes per execution, from the plan (graph --traffic)
+  bool frame = false;                // G-buffer, lighting: the frame's passes, not the technique's
+  double gb_per_s() const;           // traffic / time; 0 when the time is 0
+};
 
 struct BenchRow {
   std::string technique, scene;
   int width = 0, height = 0, shadow_size = 0;
-  std::vector<PassMedian> passes;  // median ms per pass, execution order
-  double total_ms = 0.0;           // sum of the pass medians
+  std::vector<BenchPass> passes;  // execution order
+  double total_ms = 0.0;          // sum of the pass medians
+  double technique_ms = 0.0;      // sum over the technique's own passes
 };
+
+// The medians of a session's passes, each with its planned traffic.
+std::vector<BenchPass> bench_passes(const std::vector<PassMedian>& medians, const graph::CompiledPlan& plan);
 
 struct BenchReport {
   std::string device;    // GL context backend, e.g. "egl (device 0: NVIDIA)"
   std::string renderer;  // GL_RENDERER
   std::string timing;    // how passes were timed
+  MemoryPeaks peaks;     // measured once per run
   std::vector<BenchRow> rows;
 };
 

@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "gl/context.h"
+
 namespace penumbra::exec {
 
 GLbitfield gl_barrier_bits(std::uint32_t bits) {
@@ -69,9 +71,7 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
       (timer_.mode() == TimingMode::off) == options_.timing_enabled) {
     std::vector<std::string> names;
     for (const graph::PlannedPass& p : plan_.passes) names.push_back(p.name);
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    bool software = renderer && (std::string(renderer).find("llvmpipe") != std::string::npos ||
-                                 std::string(renderer).find("softpipe") != std::string::npos);
+    const bool software = gl::current_context_is_software();
     TimingMode mode = !options_.timing_enabled ? TimingMode::off
                       : options_.force_timing_mode ? *options_.force_timing_mode
                       : software                   ? TimingMode::cpu_finish

@@ -104,4 +104,9 @@ Result<std::unique_ptr<Context>> create_context(const ContextOptions& options) {
                     ErrorKind::unavailable);
 }
 
+bool current_context_is_software() {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && (std::strstr(renderer, "llvmpipe") != nullptr || std::strstr(renderer, "softpipe") != nullptr);
+}
+
 }  // namespace penumbra::gl

@@ -73,6 +73,10 @@ class Context {
 // naming what is missing and what to try (exit code 2 in the CLI).
 Result<std::unique_ptr<Context>> create_context(const ContextOptions& options);
 
+// The current context renders in software (llvmpipe, softpipe): GL timer queries do not measure
+// its work, and sizes meant for a GPU take minutes there.
+bool current_context_is_software();
+
 // Backends (context_glfw.cpp, context_osmesa.cpp, context_egl.cpp).
 Result<std::unique_ptr<Context>> create_glfw_context(const ContextOptions& options);
 Result<std::unique_ptr<Context>> create_osmesa_context(const ContextOptions& options);

@@ -24,6 +24,7 @@ void build_plan(CompileState& s) {
     p.name = e.name;
     p.declared_as = e.bound->decl->name;
     p.iteration = e.iteration;
+    p.frame = e.bound->decl->frame;
     for (const ResourceUse& u : e.uses) {
       PlannedBinding b;
       b.slot = u.slot->name;

@@ -54,7 +54,7 @@ Checked<CompiledPlan> compile(const GraphDesc& graph, const PassTypeRegistry& re
   detail::index_resources(s);
   // Every `enabled` / `when` condition parsed, type-checked and evaluated once.
   detail::evaluate_conditions(s);
-  // Per pass, the bindings that apply for these parameters: chosen by `when`, implicit by name.
+  // Per pass, the bindings that apply for these parameters: chosen by `when`; every parameter binding explicit.
   detail::bind_passes(s);
   // Every declaration error at once: types, slots, formats, sizes, parameters, repeat.
   detail::validate_declarations(s);
@@ -76,6 +76,8 @@ Checked<CompiledPlan> compile(const GraphDesc& graph, const PassTypeRegistry& re
   detail::build_plan(s);
   // Memory barriers before each pass after incoherent (image/SSBO) writes.
   detail::plan_barriers(s);
+  // Bytes each pass reads and writes, from the formats and sizes of what it binds.
+  detail::count_traffic(s);
   return std::move(s.plan);
 }
 

@@ -137,5 +137,6 @@ void compute_lifetimes(CompileState& s);            // lifetimes.cpp
 void assign_physical_resources(CompileState& s);    // assign.cpp
 void build_plan(CompileState& s);                   // build_plan.cpp
 void plan_barriers(CompileState& s);                // barriers.cpp
+void count_traffic(CompileState& s);                // traffic.cpp
 
 }  // namespace penumbra::graph::detail

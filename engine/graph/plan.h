@@ -68,15 +68,25 @@ struct PlannedParam {
   std::string reference;  // technique parameter name when given as "$name": read per frame
 };
 
+// Bytes a pass moves through memory in one execution, by the model of traffic.cpp (the
+// resources it binds, each counted once at its size; docs/graph-format.md "Traffic").
+struct PassTraffic {
+  std::uint64_t read_bytes = 0;
+  std::uint64_t written_bytes = 0;
+  std::uint64_t total() const { return read_bytes + written_bytes; }
+};
+
 struct PlannedPass {
   std::string type;
   std::string name;        // instance name; repetitions are "name[i]"
   std::string declared_as; // the declaration's name
   int iteration = 0;       // 0..repeat-1
+  bool frame = false;      // one of the frame's own passes (G-buffer, lighting), not a technique's
   std::vector<PlannedBinding> bindings;
   std::vector<PlannedParam> params;
   std::uint32_t barriers = barrier_none;  // issue before the pass
   std::vector<std::string> barrier_reasons;  // "shadow_mask@1: texture_fetch"
+  PassTraffic traffic;                       // per execution (each repetition is a pass)
 };
 
 struct MemoryReport {
@@ -101,8 +111,19 @@ struct CompiledPlan {
   int physical_for(const std::string& name, int version = -1) const;
 };
 
-// Deterministic text dump (golden files) and Graphviz.
+// Deterministic text dump (golden files), Graphviz, and JSON (every pass with its bindings,
+// parameters and traffic; the physical resources; memory).
 std::string to_text(const CompiledPlan& plan);
 std::string to_dot(const CompiledPlan& plan);
+std::string to_json(const CompiledPlan& plan);
+
+// The bytes `pass` reads and writes: every binding's physical resource once at its full size
+// (read if the slot reads, written if it writes; a depth attachment the pass writes is also
+// read, by the depth test). Imported resources (scene geometry, camera, light) count nothing.
+PassTraffic pass_traffic(const CompiledPlan& plan, const PlannedPass& pass);
+
+// `penumbra graph --traffic`: pass, read MB, written MB, bytes per screen pixel; totals for the
+// technique's passes and for the whole frame. MB = 10^6 bytes.
+std::string traffic_table(const CompiledPlan& plan);
 
 }  // namespace penumbra::graph

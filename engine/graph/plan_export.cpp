@@ -1,5 +1,6 @@
 // Text and Graphviz views of a CompiledPlan. The text dump is the golden-file format: keep
 // it deterministic (no addresses, no hash-map order) and stable across refactors.
+#include <cstdio>
 #include <sstream>
 
 #include "graph/plan.h"
@@ -100,13 +101,22 @@ std::string to_text(const CompiledPlan& plan) {
   return o.str();
 }
 
+// "read 24.9 MB, wrote 4.1 MB"
+static std::string traffic_label(const PassTraffic& t) {
+  char text[96];
+  std::snprintf(text, sizeof text, "read %.1f MB, wrote %.1f MB", static_cast<double>(t.read_bytes) / 1e6,
+                static_cast<double>(t.written_bytes) / 1e6);
+  return text;
+}
+
 std::string to_dot(const CompiledPlan& plan) {
   std::ostringstream o;
   o << "digraph \"" << plan.graph_name << "\" {\n  rankdir=LR;\n";
   o << "  node [fontname=\"Helvetica\"];\n";
   for (size_t i = 0; i < plan.passes.size(); ++i)
     o << "  p" << i << " [shape=box, style=filled, fillcolor=\"#ffd8a8\", label=\""
-      << plan.passes[i].name << "\\n" << plan.passes[i].type << "\"];\n";
+      << plan.passes[i].name << "\\n" << plan.passes[i].type << "\\n" << traffic_label(plan.passes[i].traffic)
+      << "\"];\n";
   for (size_t i = 0; i < plan.versions.size(); ++i) {
     const auto& v = plan.versions[i];
     o << "  r" << i << " [shape=ellipse, label=\"" << v.label() << "\\n"

@@ -1,0 +1,101 @@
+// `penumbra bench` reports each pass's planned traffic beside its time, with the copy and
+// texture-fetch peaks it measured, and `penumbra graph --traffic` prints the same bytes.
+// Runs the built CLI on OSMesa (PENUMBRA_CLI, a compile definition).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "test_support/run_command.h"
+#include "test_support/temp_dir.h"
+
+namespace penumbra::test {
+namespace {
+
+CommandRun run_cli(const std::string& args) { return run_command(std::string(PENUMBRA_CLI) + " " + args); }
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+const nlohmann::json* pass_named(const nlohmann::json& row, const std::string& name) {
+  for (const auto& p : row["passes"])
+    if (p["name"] == name) return &p;
+  return nullptr;
+}
+
+constexpr int kWidth = 64, kHeight = 32, kShadow = 256;
+
+TEST(BenchCommand, ReportsTrafficBandwidthAndTheMeasuredPeaks) {
+  const std::string json = (fresh_temp_dir("bench_cli") / "bench.json").string();
+  CommandRun r = run_cli("bench --context osmesa --techniques hard --scenes ball --size 64x32 --shadow-size 256 "
+                         "--frames 2 --warmup 0 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("measured peaks: copy"), std::string::npos) << r.output;
+  nlohmann::json report = read_json(json);
+  ASSERT_FALSE(report.is_discarded());
+
+  const auto& peaks = report["peaks"];
+  ASSERT_TRUE(peaks["measured"].get<bool>()) << peaks.dump();
+  EXPECT_EQ(peaks["copy_buffer_bytes"].get<std::uint64_t>(), 32u << 20);  // software: the small size
+  EXPECT_GT(peaks["copy_gb_per_s"].get<double>(), 0.0);
+  EXPECT_GT(peaks["fetch_gtexels_per_s"].get<double>(), 0.0);
+  EXPECT_NEAR(peaks["fetch_gb_per_s"].get<double>(), 4.0 * peaks["fetch_gtexels_per_s"].get<double>(), 1e-9);
+
+  ASSERT_EQ(report["rows"].size(), 1u);
+  const auto& row = report["rows"][0];
+  const nlohmann::json* mask = pass_named(row, "hard_mask");
+  ASSERT_NE(mask, nullptr) << row.dump();
+  // Position RGBA32F + normal RGBA16F per pixel and the DEPTH32F shadow map, once each; an R16F mask.
+  EXPECT_EQ((*mask)["read_bytes"].get<std::uint64_t>(), std::uint64_t{kWidth} * kHeight * 24 + kShadow * kShadow * 4);
+  EXPECT_EQ((*mask)["written_bytes"].get<std::uint64_t>(), std::uint64_t{kWidth} * kHeight * 2);
+  EXPECT_FALSE((*mask)["frame"].get<bool>());
+  const double ms = (*mask)["ms"].get<double>();
+  ASSERT_GT(ms, 0.0);
+  const double bytes = (*mask)["read_bytes"].get<double>() + (*mask)["written_bytes"].get<double>();
+  EXPECT_NEAR((*mask)["gb_per_s"].get<double>(), bytes / (ms * 1e-3) / 1e9, 1e-6);
+  EXPECT_NEAR((*mask)["percent_of_copy_peak"].get<double>(),
+              100.0 * (*mask)["gb_per_s"].get<double>() / peaks["copy_gb_per_s"].get<double>(), 1e-6);
+
+  double technique_ms = 0.0, total_ms = 0.0;
+  for (const auto& p : row["passes"]) {
+    total_ms += p["ms"].get<double>();
+    if (!p["frame"].get<bool>()) technique_ms += p["ms"].get<double>();
+  }
+  EXPECT_TRUE((*pass_named(row, "gbuffer"))["frame"].get<bool>());
+  EXPECT_TRUE((*pass_named(row, "lighting"))["frame"].get<bool>());
+  EXPECT_NEAR(row["technique_ms"].get<double>(), technique_ms, 1e-9);
+  EXPECT_NEAR(row["total_ms"].get<double>(), total_ms, 1e-9);
+  EXPECT_LT(technique_ms, total_ms);
+}
+
+TEST(BenchCommand, WithoutPeaksThePassesAreStillReported) {
+  const std::string json = (fresh_temp_dir("bench_cli") / "bench.json").string();
+  CommandRun r = run_cli("bench --context osmesa --techniques hard --scenes ball --size 64x32 --shadow-size 256 "
+                         "--frames 1 --warmup 0 --no-peaks --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("not measured: skipped (--no-peaks)"), std::string::npos) << r.output;
+  nlohmann::json report = read_json(json);
+  EXPECT_FALSE(report["peaks"]["measured"].get<bool>());
+  const nlohmann::json* mask = pass_named(report["rows"][0], "hard_mask");
+  ASSERT_NE(mask, nullptr);
+  EXPECT_GT((*mask)["read_bytes"].get<std::uint64_t>(), 0u);
+  EXPECT_EQ((*mask)["percent_of_copy_peak"].get<double>(), 0.0);
+}
+
+TEST(GraphCommand, TrafficTablePrintsTheBytesOfEveryPass) {
+  CommandRun r = run_cli("graph " + std::string(PENUMBRA_SOURCE_DIR) +
+                         "/techniques/baseline/hard.json --traffic --screen 3840x2160 --shadow 2048");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // hard_mask at 4K: 3840*2160*24 B + 2048^2*4 B read = 215.84 MB; 3840*2160*2 B written = 16.59 MB;
+  // (215.84 + 16.59) MB / 8294400 px = 28.02 B/px.
+  EXPECT_NE(r.output.find("hard_mask                hard_mask                  215.84      16.59    28.02"),
+            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("technique passes"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace penumbra::test
