@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "exec/gbuffer_readback.h"
 #include "gl/timer_query.h"
 #include "passes/shared_passes.h"
 
@@ -28,21 +29,22 @@ metrics::MaskImage read_mask_image(const gl::Texture& texture) {
   return img;
 }
 
-metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_position) {
-  const int w = gbuffer_position.width();
-  metrics::CoverageMask coverage(static_cast<size_t>(w) * gbuffer_position.height(), 0);
-  for_each_texel_top_down(gbuffer_position, [&](int x, int y, const float* t, int c) {
-    coverage[static_cast<size_t>(y) * w + x] = t[c - 1] > 0.0f;
+metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_depth) {
+  const int w = gbuffer_depth.width();
+  metrics::CoverageMask coverage(static_cast<size_t>(w) * gbuffer_depth.height(), 0);
+  for_each_texel_top_down(gbuffer_depth, [&](int x, int y, const float* t, int) {
+    coverage[static_cast<size_t>(y) * w + x] = t[0] > 0.0f;
   });
   return coverage;
 }
 
-std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_position) {
-  const int w = gbuffer_position.width();
-  std::vector<glm::vec4> out(static_cast<size_t>(w) * gbuffer_position.height(), glm::vec4(0.0f));
-  for_each_texel_top_down(gbuffer_position, [&](int x, int y, const float* t, int c) {
-    if (c == 4) out[static_cast<size_t>(y) * w + x] = glm::vec4(t[0], t[1], t[2], t[3]);
-  });
+std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_depth, const scene::Camera& camera) {
+  const int w = gbuffer_depth.width(), h = gbuffer_depth.height();
+  const std::vector<glm::vec4> bottom_up = exec::read_positions(gbuffer_depth, camera);
+  std::vector<glm::vec4> out(bottom_up.size());
+  for (int y = 0; y < h; ++y)
+    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(y) * w, w,
+                out.begin() + static_cast<std::ptrdiff_t>(h - 1 - y) * w);
   return out;
 }
 

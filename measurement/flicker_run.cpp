@@ -52,16 +52,16 @@ class Motion {
 
 Status keep_positions(technique::TechniqueSession& session) {
   auto& keep = session.compile_options().keep_alive;
-  if (std::find(keep.begin(), keep.end(), "gbuffer_position") != keep.end()) return {};
-  keep.push_back("gbuffer_position");
+  if (std::find(keep.begin(), keep.end(), "gbuffer_depth") != keep.end()) return {};
+  keep.push_back("gbuffer_depth");
   return session.recompile();
 }
 
 Result<metrics::SurfaceFrame> read_frame(technique::TechniqueSession& session, const Motion& motion) {
   gl::Texture* mask = session.executor().resource(technique::kShadowMask);
-  gl::Texture* position = session.executor().resource("gbuffer_position");
-  if (!mask || !position) return make_error("the frame lacks shadow_mask or gbuffer_position", ErrorKind::internal);
-  return metrics::SurfaceFrame{read_mask_image(*mask), read_positions(*position), motion.view_proj()};
+  gl::Texture* depth = session.executor().resource("gbuffer_depth");
+  if (!mask || !depth) return make_error("the frame lacks shadow_mask or gbuffer_depth", ErrorKind::internal);
+  return metrics::SurfaceFrame{read_mask_image(*mask), read_positions(*depth, session.camera()), motion.view_proj()};
 }
 
 }  // namespace
@@ -85,9 +85,9 @@ Result<std::vector<metrics::SurfaceFrame>> reference_motion_frames(technique::Te
     if (Status s = session.set_technique("hard"); !s) return s.error();
     if (Status s = keep_positions(session); !s) return s.error();
     if (Status s = session.render(); !s) return s.error();
-    gl::Texture* position = session.executor().resource("gbuffer_position");
-    if (!position) return make_error("the reference frame lacks gbuffer_position", ErrorKind::internal);
-    frames.push_back({std::move(ref->mask), read_positions(*position), motion.view_proj()});
+    gl::Texture* depth = session.executor().resource("gbuffer_depth");
+    if (!depth) return make_error("the reference frame lacks gbuffer_depth", ErrorKind::internal);
+    frames.push_back({std::move(ref->mask), read_positions(*depth, session.camera()), motion.view_proj()});
   }
   return frames;
 }

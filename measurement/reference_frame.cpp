@@ -135,17 +135,17 @@ Result<ReferenceFrame> reference_frame(technique::TechniqueSession& session, con
     return frame;
   }
   auto& keep = session.compile_options().keep_alive;
-  if (std::find(keep.begin(), keep.end(), "gbuffer_position") == keep.end()) {
-    keep.push_back("gbuffer_position");  // coverage
+  if (std::find(keep.begin(), keep.end(), "gbuffer_depth") == keep.end()) {
+    keep.push_back("gbuffer_depth");  // coverage
     if (Status s = session.recompile(); !s) return s.error();
   }
   if (Status s = render_to_completion(session, settings); !s) return s.error();
   gl::Texture* mask = session.executor().resource(technique::kShadowMask);
-  gl::Texture* position = session.executor().resource("gbuffer_position");
-  if (!mask || !position)
-    return make_error("the reference frame lacks shadow_mask or gbuffer_position", ErrorKind::internal);
+  gl::Texture* depth = session.executor().resource("gbuffer_depth");
+  if (!mask || !depth)
+    return make_error("the reference frame lacks shadow_mask or gbuffer_depth", ErrorKind::internal);
   frame.mask = read_mask_image(*mask);
-  frame.coverage = read_coverage(*position);
+  frame.coverage = read_coverage(*depth);
   if (settings.use_cache && !file.empty()) {
     write_cache(file, key, frame);
     frame.cache_file = file.string();

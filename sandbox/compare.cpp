@@ -33,14 +33,14 @@ void update_compare_stats(CompareState& state, technique::TechniqueSession& prim
                           technique::TechniqueSession& secondary) {
   gl::Texture* a = primary.executor().resource(technique::kShadowMask);
   gl::Texture* b = secondary.executor().resource(technique::kShadowMask);
-  gl::Texture* pos = primary.executor().resource("gbuffer_position");
-  if (!a || !b || !pos) {
-    state.stats_error = "shadow_mask or gbuffer_position missing";
+  gl::Texture* depth = primary.executor().resource("gbuffer_depth");
+  if (!a || !b || !depth) {
+    state.stats_error = "shadow_mask or gbuffer_depth missing";
     return;
   }
   // The secondary plays the reference: RMSE of the primary against it.
   Result<metrics::MaskErrors> e = metrics::compare_masks(measurement::read_mask_image(*a), measurement::read_mask_image(*b),
-                                                         measurement::read_coverage(*pos));
+                                                         measurement::read_coverage(*depth));
   if (!e) {
     state.stats_error = e.error().to_string();
     return;

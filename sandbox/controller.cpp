@@ -267,7 +267,9 @@ Status SandboxController::view_resource(const std::string& name) {
   if (Status s = primary_->recompile(); !s) return note(s);
   // A useful first range: view distance for screen depth, [0, 1] for everything else.
   if (gl::Texture* t = primary_->executor().resource(name)) {
-    bool screen_depth = t->info().is_depth && t->width() == width_ && t->height() == height_;
+    // The z-buffer (linearised for display) and the contract's linear view depth: world units.
+    bool screen_depth = (t->info().is_depth || name == technique::kViewDepth) && t->width() == width_ &&
+                        t->height() == height_;
     viewer_.min = screen_depth ? camera().near_plane : 0.0f;
     viewer_.max = screen_depth && primary_->has_scene()
                       ? glm::length(camera().position - primary_->scene().bounds.center()) +

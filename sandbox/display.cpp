@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "exec/frame_uniforms.h"
+
 namespace penumbra::sandbox {
 
 namespace {
@@ -84,17 +86,23 @@ Status DisplayPass::draw(const Layer& layer) {
   return {};
 }
 
-Status DisplayPass::texel_density(const gl::Texture& position, const glm::mat4& light_view_proj, int shadow_size,
-                                  const glm::vec4& uv_rect, float zoom) {
+Status DisplayPass::texel_density(const gl::Texture& depth, const scene::Camera& camera,
+                                  const glm::mat4& light_view_proj, int shadow_size, const glm::vec4& uv_rect,
+                                  float zoom) {
   gl::ShaderProgram& p = shaders_.get(kDensity);
   if (Status s = program_status(p); !s) return s;
   const gl::Program& prog = p.program();
   framebuffer_->bind();
   glViewport(0, 0, target_.width(), target_.height());
   glUseProgram(p.id());
-  glBindTextureUnit(0, position.id());
+  exec::FrameInputs frame;
+  frame.camera = camera;
+  frame.screen_w = depth.width();
+  frame.screen_h = depth.height();
+  exec::bind_frame_uniforms(frame_uniforms_, frame);
+  glBindTextureUnit(0, depth.id());
   glBindSampler(0, nearest_.id());
-  prog.set("position", 0);
+  prog.set("depth", 0);
   prog.set("uv_rect", uv_rect);
   prog.set("light_view_proj", light_view_proj);
   prog.set("shadow_size", static_cast<float>(shadow_size));
@@ -106,13 +114,13 @@ Status DisplayPass::texel_density(const gl::Texture& position, const glm::mat4& 
   return {};
 }
 
-Status DisplayPass::difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& position) {
+Status DisplayPass::difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& depth) {
   gl::ShaderProgram& p = shaders_.get(kDifference);
   if (Status s = program_status(p); !s) return s;
   const gl::Program& prog = p.program();
   glUseProgram(p.id());
-  const gl::Texture* inputs[3] = {&a, &b, &position};
-  const char* names[3] = {"mask_a", "mask_b", "position"};
+  const gl::Texture* inputs[3] = {&a, &b, &depth};
+  const char* names[3] = {"mask_a", "mask_b", "depth"};
   for (int i = 0; i < 3; ++i) {
     glBindTextureUnit(i, inputs[i]->id());
     glBindSampler(i, nearest_.id());

@@ -9,8 +9,10 @@
 
 #include "sandbox/view_mapping.h"
 #include "exec/shader_cache.h"
+#include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "gl/texture.h"
+#include "scene/camera.h"
 #include "util/error.h"
 
 namespace penumbra::sandbox {
@@ -59,16 +61,18 @@ class DisplayPass {
   void show_refused() const;
   Status draw(const Layer& layer);
   // Shadow-map texels per frame pixel of each receiver (texel_density.frag.glsl), over the target.
-  Status texel_density(const gl::Texture& position, const glm::mat4& light_view_proj, int shadow_size,
-                       const glm::vec4& uv_rect, float zoom);
-  // difference.r = |a.r - b.r|, difference.g = receiver coverage (position.w > 0).
-  Status difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& position);
+  // Receivers come from gbuffer_depth and the camera it was rendered with.
+  Status texel_density(const gl::Texture& depth, const scene::Camera& camera, const glm::mat4& light_view_proj,
+                       int shadow_size, const glm::vec4& uv_rect, float zoom);
+  // difference.r = |a.r - b.r|, difference.g = receiver coverage (gbuffer_depth > 0).
+  Status difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& depth);
   const gl::Texture& difference_texture() const { return difference_; }
 
   exec::ShaderCache& shaders() { return shaders_; }
   const exec::ShaderCache& shaders() const { return shaders_; }
 
  private:
+  gl::Buffer frame_uniforms_;  // the camera for texel_density (exec/frame_uniforms.h)
   exec::ShaderCache shaders_;
   gl::Texture target_, difference_;
   std::unique_ptr<gl::Framebuffer> framebuffer_;

@@ -19,19 +19,19 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
   gl::Texture* color_a = in.primary.executor().resource(technique::kColor);
   if (!color_a) return make_error("the frame has no 'color' resource", ErrorKind::internal);
   if (in.texel_density) {
-    gl::Texture* pos = in.primary.executor().resource("gbuffer_position");
-    if (!pos) return make_error("texel density: the frame has no gbuffer_position", ErrorKind::internal);
+    gl::Texture* depth = in.primary.executor().resource("gbuffer_depth");
+    if (!depth) return make_error("texel density: the frame has no gbuffer_depth", ErrorKind::internal);
     const scene::ShadowFrustum f = scene::shadow_frustum(in.primary.light(), in.primary.scene().bounds);
-    if (Status s = display.texel_density(*pos, f.view_proj, in.primary.settings().shadow_size, base.uv_rect,
+    if (Status s = display.texel_density(*depth, in.primary.camera(), f.view_proj, in.primary.settings().shadow_size, base.uv_rect,
                                          in.viewer.zoom.zoom);
         !s)
       return s;
   } else if (comparing && in.compare.view == CompareState::View::error) {
     gl::Texture* a = in.primary.executor().resource(technique::kShadowMask);
     gl::Texture* b = in.secondary->executor().resource(technique::kShadowMask);
-    gl::Texture* pos = in.primary.executor().resource("gbuffer_position");
-    if (!a || !b || !pos) return make_error("compare: shadow_mask or gbuffer_position missing", ErrorKind::internal);
-    if (Status s = display.difference(*a, *b, *pos); !s) return s;
+    gl::Texture* depth = in.primary.executor().resource("gbuffer_depth");
+    if (!a || !b || !depth) return make_error("compare: shadow_mask or gbuffer_depth missing", ErrorKind::internal);
+    if (Status s = display.difference(*a, *b, *depth); !s) return s;
     base.texture = &display.difference_texture();
     base.map = ViewerSettings::Map::heat;
     base.range = {0.0f, std::max(in.compare.error_max, 1e-4f)};

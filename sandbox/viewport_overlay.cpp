@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "exec/gbuffer_readback.h"
 #include "sandbox/compare_metrics.h"
 #include "sandbox/inspector.h"
 #include "sandbox/shadow_debug.h"
@@ -55,16 +56,19 @@ void draw_light_frustum(SandboxController& c, ImDrawList* dl, float x0, float y0
 // The receiver under the cursor: its cone to the emitter in the scene and, when the viewer
 // shows a shadow-map-sized resource, the blocker-search region on it.
 void draw_blocker_region(SandboxController& c, ImDrawList* dl, float x0, float y0, int px, int py) {
-  gl::Texture* pos = c.session().executor().resource("gbuffer_position");
-  if (!pos || !c.session().has_scene() || pos->width() != c.width() || pos->height() != c.height()) return;
+  gl::Texture* depth = c.session().executor().resource("gbuffer_depth");
+  if (!depth || !c.session().has_scene() || depth->width() != c.width() || depth->height() != c.height()) return;
   const ViewZoom& z = c.viewer().zoom;
   const std::optional<glm::ivec2> t =
-      pixel_to_texel({px, c.height() - 1 - py}, {0, 0, c.width(), c.height()}, zoomed_uv_rect(z), pos->width(), pos->height());
+      pixel_to_texel({px, c.height() - 1 - py}, {0, 0, c.width(), c.height()}, zoomed_uv_rect(z), depth->width(), depth->height());
   if (!t) return;
-  float p[4] = {0, 0, 0, 0};
-  glGetTextureSubImage(pos->id(), 0, t->x, t->y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof p, p);
-  if (!(p[3] > 0.0f)) return;
-  const glm::vec3 receiver(p[0], p[1], p[2]);
+  float view_depth = 0.0f;
+  glGetTextureSubImage(depth->id(), 0, t->x, t->y, 0, 1, 1, 1, GL_RED, GL_FLOAT, sizeof view_depth, &view_depth);
+  if (!(view_depth > 0.0f)) return;
+  const float aspect = static_cast<float>(c.width()) / static_cast<float>(c.height());
+  const glm::vec3 receiver = exec::world_from_view_depth(glm::inverse(c.camera().view()),
+                                                         glm::inverse(c.camera().projection(aspect)), t->x, t->y,
+                                                         c.width(), c.height(), view_depth);
   const scene::Light& light = c.light();
   std::vector<Segment> cone;
   for (const glm::vec3& e : emitter_outline(light, 12)) cone.push_back({receiver, e});

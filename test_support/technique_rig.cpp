@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "exec/gbuffer_readback.h"
 #include "passes/shared_passes.h"
 #include "plugin/plugin_library.h"
 #include "scene/builtin_scenes.h"
@@ -25,7 +26,7 @@ TechniqueRig::TechniqueRig(RigOptions options)
     ADD_FAILURE() << loaded.error().to_string();
   state_->library = make_pass_library(state_->registry);
   session_ = std::make_unique<technique::TechniqueSession>(state_->registry, state_->library);
-  session_->compile_options().keep_alive = {"gbuffer_position", "gbuffer_normal"};
+  session_->compile_options().keep_alive = {"gbuffer_depth", "gbuffer_normal"};
   for (std::string& r : options.keep_alive) session_->compile_options().keep_alive.push_back(std::move(r));
   resize(options.width, options.height);
   set_shadow_size(options.shadow_size);
@@ -105,17 +106,29 @@ metrics::RgbaImage TechniqueRig::read_rgba(const std::string& resource) {
 }
 
 metrics::CoverageMask TechniqueRig::coverage() {
-  const metrics::MaskImage w = read("gbuffer_position", 3);
-  metrics::CoverageMask c(w.pixels.size(), 0);
-  for (size_t i = 0; i < c.size(); ++i) c[i] = w.pixels[i] > 0.0f ? 1 : 0;
+  const metrics::MaskImage d = read("gbuffer_depth");
+  metrics::CoverageMask c(d.pixels.size(), 0);
+  for (size_t i = 0; i < c.size(); ++i) c[i] = d.pixels[i] > 0.0f ? 1 : 0;
   return c;
 }
 
+std::vector<glm::vec4> TechniqueRig::positions() {
+  gl::Texture* depth = session_->executor().resource("gbuffer_depth");
+  if (!depth) return {};
+  const int w = depth->width(), h = depth->height();
+  const std::vector<glm::vec4> bottom_up = exec::read_positions(*depth, session_->camera());
+  std::vector<glm::vec4> top_down(bottom_up.size());
+  for (int y = 0; y < h; ++y)
+    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(y) * w, w,
+                top_down.begin() + static_cast<std::ptrdiff_t>(h - 1 - y) * w);
+  return top_down;
+}
+
 metrics::MaskImage TechniqueRig::world_y() {
-  metrics::MaskImage y = read("gbuffer_position", 1);
-  const metrics::MaskImage w = read("gbuffer_position", 3);
-  for (size_t i = 0; i < y.pixels.size(); ++i)
-    if (w.pixels[i] <= 0.0f) y.pixels[i] = std::numeric_limits<float>::quiet_NaN();
+  metrics::MaskImage y = read("gbuffer_depth");
+  const std::vector<glm::vec4> p = positions();
+  for (size_t i = 0; i < y.pixels.size() && i < p.size(); ++i)
+    y.pixels[i] = p[i].w > 0.0f ? p[i].y : std::numeric_limits<float>::quiet_NaN();
   return y;
 }
 
@@ -124,19 +137,20 @@ void TechniqueRig::gbuffer(std::vector<glm::vec3>& positions, std::vector<glm::v
   positions.clear();
   normals.clear();
   coverage.clear();
-  const TextureImage p = read_all("gbuffer_position"), n = read_all("gbuffer_normal");
-  if (p.texels.empty() || n.texels.empty()) {
-    ADD_FAILURE() << "the frame has no gbuffer_position or gbuffer_normal";
+  const std::vector<glm::vec4> p = this->positions();
+  const TextureImage n = read_all("gbuffer_normal");
+  if (p.empty() || n.texels.empty()) {
+    ADD_FAILURE() << "the frame has no gbuffer_depth or gbuffer_normal";
     return;
   }
-  const size_t count = static_cast<size_t>(p.width) * p.height;
+  const size_t count = p.size();
   positions.resize(count);
   normals.resize(count);
   coverage.resize(count);
   for (size_t i = 0; i < count; ++i) {
-    coverage[i] = p.texels[4 * i + 3] > 0.0f ? 1 : 0;
-    positions[i] = coverage[i] ? glm::vec3(p.texels[4 * i], p.texels[4 * i + 1], p.texels[4 * i + 2]) : glm::vec3(0.0f);
-    normals[i] = glm::vec3(n.texels[4 * i], n.texels[4 * i + 1], n.texels[4 * i + 2]);
+    coverage[i] = p[i].w > 0.0f ? 1 : 0;
+    positions[i] = coverage[i] ? glm::vec3(p[i]) : glm::vec3(0.0f);
+    normals[i] = exec::decode_octahedral_normal({n.texels[2 * i], n.texels[2 * i + 1]});
   }
 }
 

@@ -38,7 +38,7 @@ struct RigOptions {
   std::function<void(technique::TechniqueRegistry&)> techniques;
   // Plugin directories loaded after `techniques` (plugin::load_plugins: --plugin-dir's rules).
   std::vector<std::string> plugin_dirs;
-  // Resources kept alive for read() besides the outputs and gbuffer_position/gbuffer_normal
+  // Resources kept alive for read() besides the outputs and gbuffer_depth/gbuffer_normal
   // (transient textures are otherwise reused by later passes of the frame).
   std::vector<std::string> keep_alive;
 };
@@ -48,7 +48,7 @@ struct RenderedFrame {
   metrics::MaskImage mask;           // shadow_mask, 1 = lit
   std::vector<glm::vec3> positions;  // world; (0, 0, 0) where coverage is 0
   std::vector<glm::vec3> normals;
-  metrics::CoverageMask coverage;    // gbuffer_position.w > 0: receivers
+  metrics::CoverageMask coverage;    // gbuffer_depth > 0: receivers
   // Sum of the median times of the technique's own passes (all but gbuffer and lighting), ms:
   // GPU timestamps on a GPU, glFinish + a CPU clock on llvmpipe.
   double technique_ms = 0.0;
@@ -89,9 +89,11 @@ class TechniqueRig {
   TextureImage read_all(const std::string& resource);
   // A 4-channel resource as RGBA8 (debug views); empty when absent or not 4 channels.
   metrics::RgbaImage read_rgba(const std::string& resource);
-  // Receivers: 1 where gbuffer_position.w > 0.
+  // Receivers: 1 where gbuffer_depth > 0.
   metrics::CoverageMask coverage();
-  // World-space height (gbuffer_position.y) per pixel, NaN on background.
+  // World positions rebuilt from gbuffer_depth (w = view depth, 0 on background).
+  std::vector<glm::vec4> positions();
+  // World-space height per pixel, NaN on background.
   metrics::MaskImage world_y();
   // G-buffer positions ((0, 0, 0) off receivers), normals and coverage, e.g. for the ray-traced
   // reference (reference::trace_visibility).

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "exec/frame_uniforms.h"
 #include "gl/context.h"
 
 namespace penumbra::exec {
@@ -18,13 +19,6 @@ GLbitfield gl_barrier_bits(std::uint32_t bits) {
   return gl;
 }
 
-gl::Format to_gl_format(graph::Format f) {
-  // The two enums list the same formats in the same order (graph/ must not include GL).
-  return static_cast<gl::Format>(static_cast<int>(f));
-}
-
-static_assert(static_cast<int>(graph::Format::DEPTH32F) == static_cast<int>(gl::Format::DEPTH32F));
-static_assert(static_cast<int>(graph::Format::RGBA8) == static_cast<int>(gl::Format::RGBA8));
 
 Status Executor::set_plan(graph::CompiledPlan plan) {
   std::vector<std::unique_ptr<PassImpl>> impls;
@@ -47,9 +41,9 @@ Status Executor::set_plan(graph::CompiledPlan plan) {
     } else if (r.kind == graph::ResourceKind::persistent) {
       std::string name = r.holds.empty() ? "persistent#" + std::to_string(r.id) : r.holds.front();
       name = name.substr(0, name.find('@'));
-      textures[r.id] = pool_.persistent(name, to_gl_format(r.format), r.width, r.height);
+      textures[r.id] = pool_.persistent(name, r.format, r.width, r.height);
     } else {
-      textures[r.id] = pool_.acquire(to_gl_format(r.format), r.width, r.height);
+      textures[r.id] = pool_.acquire(r.format, r.width, r.height);
     }
   }
   pool_.end_generation();
@@ -85,6 +79,7 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
   auto buffer_of = [this](int id) -> gl::Buffer* {
     return id >= 0 && id < static_cast<int>(buffers_.size()) ? buffers_[id] : nullptr;
   };
+  bind_frame_uniforms(frame_uniforms_, frame);
   Status result;
   for (size_t i = 0; i < plan_.passes.size(); ++i) {
     const graph::PlannedPass& pass = plan_.passes[i];

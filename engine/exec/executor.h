@@ -72,12 +72,12 @@ class Executor {
   std::vector<std::unique_ptr<PassImpl>> impls_;
   std::vector<gl::Texture*> textures_;  // by physical id
   std::vector<gl::Buffer*> buffers_;    // by physical id
+  gl::Buffer frame_uniforms_;           // exec/frame_uniforms.h, refreshed every frame
   PassTimer timer_;
   std::uint32_t frames_ = 0;
   std::optional<PassProgress> progress_;
 };
 
 GLbitfield gl_barrier_bits(std::uint32_t graph_bits);
-gl::Format to_gl_format(graph::Format f);
 
 }  // namespace penumbra::exec

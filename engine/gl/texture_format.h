@@ -1,22 +1,21 @@
 #pragma once
-// The texture formats the techniques need, and how each maps to GL and to bytes.
-// The enum is shared with the GL-free graph compiler via graph/texture_format.h when present;
-// here it carries the GL side of each format.
+// The GL side of the graph's texture formats (graph/resources.h holds the one list, with names,
+// sizes and channels): the enums each format is created, uploaded and read back with.
 #include <glad/gl.h>
 
-#include <optional>
 #include <string_view>
+
+#include "graph/resources.h"
 
 namespace penumbra::gl {
 
-enum class Format { R8, R16F, R32F, RG16F, RG32F, RGBA8, RGBA16F, RGBA32F, DEPTH32F };
+using Format = graph::Format;
 
 struct FormatInfo {
   Format format;
   std::string_view name;   // as written in graph JSON
-  GLenum internal_format;  // for glTextureStorage2D
+  GLenum internal_format;  // for glTextureStorage2D and glBindImageTexture
   GLenum pixel_format;     // for read back / upload
-  GLenum pixel_type;
   int channels;
   int bytes_per_texel;
   bool is_depth;
@@ -24,6 +23,5 @@ struct FormatInfo {
 };
 
 const FormatInfo& format_info(Format f);
-std::optional<Format> parse_format(std::string_view name);
 
 }  // namespace penumbra::gl

@@ -8,18 +8,36 @@
 namespace penumbra::graph {
 
 namespace {
-struct FormatInfo {
+struct FormatFacts {
   Format format;
   const char* name;
   int bytes;
+  int channels;
+  const char* image_qualifier;  // "" for depth
 };
-constexpr FormatInfo kFormats[kFormatCount] = {
-    {Format::R8, "R8", 1},           {Format::R16F, "R16F", 2},
-    {Format::R32F, "R32F", 4},       {Format::RG16F, "RG16F", 4},
-    {Format::RG32F, "RG32F", 8},     {Format::RGBA8, "RGBA8", 4},
-    {Format::RGBA16F, "RGBA16F", 8}, {Format::RGBA32F, "RGBA32F", 16},
-    {Format::DEPTH32F, "DEPTH32F", 4},
+constexpr FormatFacts kFormats[kFormatCount] = {
+    {Format::R8, "R8", 1, 1, "r8"},
+    {Format::R16F, "R16F", 2, 1, "r16f"},
+    {Format::R32F, "R32F", 4, 1, "r32f"},
+    {Format::RG16F, "RG16F", 4, 2, "rg16f"},
+    {Format::RG32F, "RG32F", 8, 2, "rg32f"},
+    {Format::RGBA8, "RGBA8", 4, 4, "rgba8"},
+    {Format::RGBA16F, "RGBA16F", 8, 4, "rgba16f"},
+    {Format::RGBA32F, "RGBA32F", 16, 4, "rgba32f"},
+    {Format::DEPTH32F, "DEPTH32F", 4, 1, ""},
+    {Format::R16, "R16", 2, 1, "r16"},
+    {Format::RG16, "RG16", 4, 2, "rg16"},
+    {Format::R16_SNORM, "R16_SNORM", 2, 1, "r16_snorm"},
+    {Format::RG16_SNORM, "RG16_SNORM", 4, 2, "rg16_snorm"},
+    {Format::RGB10A2, "RGB10A2", 4, 4, "rgb10_a2"},
+    {Format::R11G11B10F, "R11G11B10F", 4, 3, "r11f_g11f_b10f"},
 };
+constexpr bool listed_in_enum_order() {
+  for (int i = 0; i < kFormatCount; ++i)
+    if (static_cast<int>(kFormats[i].format) != i) return false;
+  return true;
+}
+static_assert(listed_in_enum_order(), "kFormats is indexed by Format");
 
 bool parse_int(std::string_view s, int& out) {
   if (s.empty()) return false;
@@ -30,6 +48,9 @@ bool parse_int(std::string_view s, int& out) {
 
 const char* format_name(Format format) { return kFormats[static_cast<int>(format)].name; }
 int bytes_per_texel(Format format) { return kFormats[static_cast<int>(format)].bytes; }
+int channel_count(Format format) { return kFormats[static_cast<int>(format)].channels; }
+bool is_depth_format(Format format) { return format == Format::DEPTH32F; }
+const char* image_format_qualifier(Format format) { return kFormats[static_cast<int>(format)].image_qualifier; }
 
 std::optional<Format> parse_format(std::string_view name) {
   for (const auto& f : kFormats)

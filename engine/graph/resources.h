@@ -9,12 +9,22 @@
 
 namespace penumbra::graph {
 
-enum class Format { R8, R16F, R32F, RG16F, RG32F, RGBA8, RGBA16F, RGBA32F, DEPTH32F };
-inline constexpr int kFormatCount = 9;
+// The one list of texture formats; engine/gl/texture_format.cpp adds each one's GL enums.
+// R16/RG16 are unsigned normalised, *_SNORM signed normalised (both read as floats).
+enum class Format {
+  R8, R16F, R32F, RG16F, RG32F, RGBA8, RGBA16F, RGBA32F, DEPTH32F,
+  R16, RG16, R16_SNORM, RG16_SNORM, RGB10A2, R11G11B10F
+};
+inline constexpr int kFormatCount = 15;
 
 const char* format_name(Format format);
 std::optional<Format> parse_format(std::string_view name);
 int bytes_per_texel(Format format);
+int channel_count(Format format);
+bool is_depth_format(Format format);
+// The GLSL image format layout qualifier of the format ("r16f", "rgb10_a2"); "" for depth
+// formats, which image load/store cannot use.
+const char* image_format_qualifier(Format format);
 
 // texture:    transient, compiler-owned, may share a physical texture with another resource
 //             of the identical descriptor whose lifetime does not overlap.

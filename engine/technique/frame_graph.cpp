@@ -1,6 +1,8 @@
 #include "technique/frame_graph.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 #include "graph/builder.h"
 
@@ -14,8 +16,24 @@ bool same_decl(const graph::ResourceDecl& a, const graph::ResourceDecl& b) {
   return a.format == b.format && a.size.to_string() == b.size.to_string();
 }
 
-constexpr const char* kFrameResources[] = {"scene", "camera", "light", "gbuffer_depth",
-                                           "gbuffer_normal", "gbuffer_position", "gbuffer_albedo"};
+constexpr const char* kFrameResources[] = {"scene",          "camera",         "light",          "gbuffer_depth",
+                                           "gbuffer_normal", "gbuffer_albedo", "gbuffer_zbuffer"};
+
+// A technique pass binding a resource the frame used to provide: an error naming it, where it
+// is bound, and its replacement.
+std::optional<Error> removed_frame_resource(const graph::GraphDesc& technique) {
+  for (size_t p = 0; p < technique.passes.size(); ++p)
+    for (const graph::SlotBinding& b : technique.passes[p].slots)
+      for (const RemovedFrameResource& removed : kRemovedFrameResources)
+        if (b.resource == removed.name) {
+          Error e = make_error("pass '" + technique.passes[p].name + "', slot '" + b.slot + "': resource '" +
+                               removed.name + "' is no longer part of the frame: " + removed.replacement);
+          e.file = technique.source_file;
+          e.where = b.location.empty() ? "/passes/" + std::to_string(p) : b.location;
+          return e;
+        }
+  return std::nullopt;
+}
 
 }  // namespace
 
@@ -23,7 +41,9 @@ bool reads_frame_resources(const graph::GraphDesc& graph) {
   for (const graph::PassDecl& p : graph.passes)
     for (const graph::SlotBinding& b : p.slots) {
       bool frame = std::find(std::begin(kFrameResources), std::end(kFrameResources), b.resource) !=
-                   std::end(kFrameResources);
+                       std::end(kFrameResources) ||
+                   std::any_of(std::begin(kRemovedFrameResources), std::end(kRemovedFrameResources),
+                               [&](const RemovedFrameResource& r) { return b.resource == r.name; });
       bool declared = std::any_of(graph.resources.begin(), graph.resources.end(),
                                   [&](const graph::ResourceDecl& r) { return r.name == b.resource; });
       if (frame && !declared) return true;
@@ -33,21 +53,22 @@ bool reads_frame_resources(const graph::GraphDesc& graph) {
 
 Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique) {
   using namespace graph;
+  if (std::optional<Error> e = removed_frame_resource(technique)) return *e;
   GraphBuilder b(technique.name);
   ImportedHandle scene = b.import("scene");
   ImportedHandle camera = b.import("camera");
   b.import("light");
-  TextureHandle depth = b.texture("gbuffer_depth", Format::DEPTH32F, SizeExpr::screen());
-  TextureHandle normal = b.texture("gbuffer_normal", Format::RGBA16F, SizeExpr::screen());
-  TextureHandle position = b.texture("gbuffer_position", Format::RGBA32F, SizeExpr::screen());
+  TextureHandle depth = b.texture("gbuffer_depth", Format::R32F, SizeExpr::screen());
+  TextureHandle normal = b.texture("gbuffer_normal", Format::RG16, SizeExpr::screen());
   TextureHandle albedo = b.texture("gbuffer_albedo", Format::RGBA8, SizeExpr::screen());
+  TextureHandle zbuffer = b.texture("gbuffer_zbuffer", Format::DEPTH32F, SizeExpr::screen());
   TextureHandle color = b.texture(kColor, Format::RGBA8, SizeExpr::screen());
   b.pass("gbuffer", "gbuffer")
       .read("scene", scene)
       .read("camera", camera)
+      .write("zbuffer", zbuffer)
       .write("depth", depth)
       .write("normal", normal)
-      .write("position", position)
       .write("albedo", albedo);
   GraphDesc frame = b.build();
   for (PassDecl& p : frame.passes) p.frame = true;
@@ -87,7 +108,7 @@ Result<graph::GraphDesc> compose_frame_graph(const graph::GraphDesc& technique) 
   lighting.frame = true;
   lighting.slots = {{"albedo", "gbuffer_albedo", -1, ""},
                     {"normal", "gbuffer_normal", -1, ""},
-                    {"position", "gbuffer_position", -1, ""},
+                    {"depth", "gbuffer_depth", -1, ""},
                     {"shadow_mask", kShadowMask, -1, ""},
                     {"light", "light", -1, ""},
                     {"color", kColor, -1, ""}};

@@ -30,7 +30,7 @@ class MaskPass final : public penumbra::exec::PassImpl {
   Status execute(PassContext& ctx) override {
     penumbra::gl::ShaderProgram& p = ctx.program({.compute = "vsm/vsm_mask.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_moments", "moments");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame());
@@ -56,10 +56,10 @@ penumbra::exec::PassType moments_pass_type() {
 penumbra::exec::PassType mask_pass_type() {
   return penumbra::exec::PassDeclBuilder("vsm_mask")
       .describe("VSM: Chebyshev upper bound of the receiver's visibility (compute)")
-      .sampled("position", {Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
       .sampled("moments", {Format::RG32F})
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "mask"})
+      .same_size({"depth", "mask"})
       .real("min_variance", 1e-4, 0.0, 1.0, "world units^2", "variance floor (acne on flat receivers)")
       .real("light_bleeding", 0.2, 0.0, 0.95, "", "visibility below this is cut to 0 and the rest rescaled")
       .build<MaskPass>();

@@ -10,7 +10,7 @@ namespace vsm {
 // "vsm_moments": shadow map (window depth) -> RG32F (mean, mean of squares) of the light
 // distance over a (2r+1)^2 box, r = blur_radius texels (compute).
 penumbra::exec::PassType moments_pass_type();
-// "vsm_mask": G-buffer position + moments -> shadow_mask by the Chebyshev bound (compute).
+// "vsm_mask": G-buffer view depth + moments -> shadow_mask by the Chebyshev bound (compute).
 penumbra::exec::PassType mask_pass_type();
 
 // Adds technique "vsm" (graph vsm/vsm.json, found beside the plugin's .so) and both pass types.

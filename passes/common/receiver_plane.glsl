@@ -3,7 +3,9 @@
 // receiver's depth is a plane in shadow-map space, so a tap at uv offset `o` is compared against
 // depth + dot(o, dz_duv) instead of the centre depth, which removes acne on slanted receivers
 // without a large constant bias.
-// Needs: shadow_common.glsl included before.
+// Needs: shadow_common.glsl included before. Receivers come from the frame contract's view depth
+// and normal (gbuffer_read.glsl): a neighbour costs a 4-byte depth fetch.
+#include "gbuffer/gbuffer_read.glsl"
 
 // A receiver pixel in light space: shadow-map coordinate (uv, window depth) and the receiver
 // plane's depth gradient d(window depth)/d(uv) (Isidoro 2006).
@@ -25,12 +27,12 @@ vec2 plane_depth_gradient(vec3 dx, vec3 dy) {
 // A G-buffer neighbour `step` pixels away (tried on both sides) that lies on the receiver's
 // tangent plane, i.e. on the same surface: |n . (q - p)| <= 0.25 |q - p| (about 14 degrees,
 // room for the smooth normal of a tessellated curved surface).
-bool same_surface_neighbour(sampler2D positions, ivec2 pixel, ivec2 step, vec3 world, vec3 n, out vec3 q) {
-  ivec2 size = textureSize(positions, 0);
+bool same_surface_neighbour(sampler2D depths, ivec2 pixel, ivec2 step, vec3 world, vec3 n, out vec3 q) {
+  ivec2 size = textureSize(depths, 0);
   for (int side = 0; side < 2; ++side) {
     ivec2 t = pixel + (side == 0 ? step : -step);
     if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;
-    vec4 w = texelFetch(positions, t, 0);
+    vec4 w = gbuffer_position(depths, t);
     vec3 d = w.xyz - world;
     if (w.w > 0.0 && abs(dot(d, n)) <= 0.25 * length(d) && dot(d, d) > 0.0) {
       q = w.xyz;
@@ -46,11 +48,11 @@ bool same_surface_neighbour(sampler2D positions, ivec2 pixel, ivec2 step, vec3 w
 // and the border of the geometry do not produce a wild plane. Where no such neighbour exists (a one-pixel-wide surface) the plane
 // comes from the normal alone: two points a small step along the tangent plane (1e-3 of the
 // light distance; the map is linear, or locally linear for a spot light).
-vec2 receiver_depth_gradient(sampler2D positions, ivec2 pixel, vec3 world, vec3 normal, vec3 c) {
+vec2 receiver_depth_gradient(sampler2D depths, ivec2 pixel, vec3 world, vec3 normal, vec3 c) {
   vec3 n = normalize(normal);
   vec3 qx, qy;
-  if (same_surface_neighbour(positions, pixel, ivec2(1, 0), world, n, qx) &&
-      same_surface_neighbour(positions, pixel, ivec2(0, 1), world, n, qy))
+  if (same_surface_neighbour(depths, pixel, ivec2(1, 0), world, n, qx) &&
+      same_surface_neighbour(depths, pixel, ivec2(0, 1), world, n, qy))
     return plane_depth_gradient(shadow_coord(qx) - c, shadow_coord(qy) - c);
   vec3 helper = abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
   vec3 t1 = normalize(cross(n, helper));
@@ -61,18 +63,18 @@ vec2 receiver_depth_gradient(sampler2D positions, ivec2 pixel, vec3 world, vec3 
 
 // False for background pixels and for pixels outside the shadow-map frustum (those are lit).
 // True for a receiver that faces away from the light (visibility 0, shadow_common.glsl).
-bool self_shadowed(sampler2D positions, sampler2D normals, ivec2 pixel) {
-  vec4 pos = texelFetch(positions, pixel, 0);
-  return pos.w > 0.0 && faces_away_from_light(pos.xyz, texelFetch(normals, pixel, 0).xyz);
+bool self_shadowed(sampler2D depths, sampler2D normals, ivec2 pixel) {
+  vec4 pos = gbuffer_position(depths, pixel);
+  return pos.w > 0.0 && faces_away_from_light(pos.xyz, gbuffer_normal(normals, pixel));
 }
 
-bool shadow_receiver(sampler2D positions, sampler2D normals, ivec2 pixel, out Receiver r) {
-  vec4 pos = texelFetch(positions, pixel, 0);
+bool shadow_receiver(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r) {
+  vec4 pos = gbuffer_position(depths, pixel);
   if (pos.w <= 0.0) return false;
   r.coord = shadow_coord(pos.xyz);
   if (any(lessThan(r.coord, vec3(0.0))) || any(greaterThan(r.coord, vec3(1.0)))) return false;
-  vec3 n = texelFetch(normals, pixel, 0).xyz;
-  r.dz_duv = receiver_depth_gradient(positions, pixel, pos.xyz, n, r.coord);
+  vec3 n = gbuffer_normal(normals, pixel);
+  r.dz_duv = receiver_depth_gradient(depths, pixel, pos.xyz, n, r.coord);
   return true;
 }
 

@@ -6,8 +6,8 @@ exec::PassDeclBuilder shadow_receiver_pass(const char* name, const char* descrip
   using graph::Format;
   exec::PassDeclBuilder b(name);
   b.describe(description)
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
+      .sampled("normal", {Format::RG16})
       .sampled("shadow_map", {Format::DEPTH32F})
       .imported("light", false);
   return b;

@@ -1,6 +1,10 @@
-// G-buffer pre-pass: the frame's first pass (technique/frame_graph.h). A raster pass: depth,
-// world normal, world position with linear view depth, and base colour for the lighting pass.
+// G-buffer pre-pass: the frame's first pass (technique/frame_graph.h). A raster pass: the
+// depth test's z-buffer, linear view depth, the octahedral world normal and base colour.
+// Positions are rebuilt from the view depth (gbuffer_read.glsl), not stored.
 #include "passes/gbuffer/gbuffer_pass.h"
+
+#include <algorithm>
+#include <iterator>
 
 #include "exec/gpu_scene.h"
 #include "exec/pass_decl_builder.h"
@@ -17,19 +21,17 @@ class GBufferPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.vertex = "passes/gbuffer/gbuffer.vert.glsl",
                                         .fragment = "passes/gbuffer/gbuffer.frag.glsl"});
     if (!p.valid()) return *p.last_error();
-    gl::Texture& depth = ctx.texture("depth");
-    if (fb_depth_ != depth.id() || fb_normal_ != ctx.texture("normal").id() ||
-        fb_position_ != ctx.texture("position").id() || fb_albedo_ != ctx.texture("albedo").id()) {
+    gl::Texture& zbuffer = ctx.texture("zbuffer");
+    const GLuint ids[4] = {zbuffer.id(), ctx.texture("depth").id(), ctx.texture("normal").id(),
+                           ctx.texture("albedo").id()};
+    if (!std::equal(std::begin(ids), std::end(ids), std::begin(fb_ids_))) {
       fb_ = gl::Framebuffer();
-      fb_.attach_color(0, ctx.texture("normal"));
-      fb_.attach_color(1, ctx.texture("position"));
+      fb_.attach_color(0, ctx.texture("depth"));
+      fb_.attach_color(1, ctx.texture("normal"));
       fb_.attach_color(2, ctx.texture("albedo"));
-      fb_.attach_depth(depth);
+      fb_.attach_depth(zbuffer);
       if (Status s = fb_.finish(); !s) return s;
-      fb_depth_ = depth.id();
-      fb_normal_ = ctx.texture("normal").id();
-      fb_position_ = ctx.texture("position").id();
-      fb_albedo_ = ctx.texture("albedo").id();
+      std::copy(std::begin(ids), std::end(ids), std::begin(fb_ids_));
     }
     fb_.bind();
     const float zero[4] = {0, 0, 0, 0};
@@ -48,21 +50,21 @@ class GBufferPass final : public exec::PassImpl {
 
  private:
   gl::Framebuffer fb_;
-  GLuint fb_depth_ = 0, fb_normal_ = 0, fb_position_ = 0, fb_albedo_ = 0;
+  GLuint fb_ids_[4] = {0, 0, 0, 0};  // zbuffer, depth, normal, albedo the framebuffer holds
 };
 
 }  // namespace
 
 exec::PassType gbuffer_pass_type() {
   return exec::PassDeclBuilder("gbuffer")
-      .describe("Depth/normal/position/albedo pre-pass from the camera (raster)")
+      .describe("Z-buffer, linear view depth, octahedral normal and albedo pre-pass from the camera (raster)")
       .imported("scene")
       .imported("camera")
-      .depth_out("depth")
-      .color_out("normal", {Format::RGBA16F, Format::RGBA32F})
-      .color_out("position", {Format::RGBA32F})
-      .color_out("albedo", {Format::RGBA8, Format::RGBA16F})
-      .same_size({"depth", "normal", "position", "albedo"})
+      .depth_out("zbuffer")
+      .color_out("depth", {Format::R32F})
+      .color_out("normal", {Format::RG16})
+      .color_out("albedo", {Format::RGBA8})
+      .same_size({"zbuffer", "depth", "normal", "albedo"})
       .build<GBufferPass>();
 }
 

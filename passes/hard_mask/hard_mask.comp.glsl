@@ -1,20 +1,21 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Hard shadow: one depth comparison per pixel at the nearest shadow-map texel; the mask is
 // exactly 0 or 1.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/shadow_common.glsl"
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;
-uniform sampler2D u_normal;
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;   // raw depth, nearest
 uniform float u_depth_bias;       // window depth units
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   float lit = 1.0;
-  if (pos.w > 0.0 && faces_away_from_light(pos.xyz, texelFetch(u_normal, p, 0).xyz)) {
+  if (pos.w > 0.0 && faces_away_from_light(pos.xyz, gbuffer_normal(u_normal, p))) {
     lit = 0.0;
   } else if (pos.w > 0.0) {
     vec3 c = shadow_coord(pos.xyz);

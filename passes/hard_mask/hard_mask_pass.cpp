@@ -15,7 +15,7 @@ class HardMaskPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "passes/hard_mask/hard_mask.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
@@ -32,7 +32,7 @@ class HardMaskPass final : public exec::PassImpl {
 exec::PassType hard_mask_pass_type() {
   return shadow_receiver_pass("hard_mask", "Binary shadow mask: one nearest shadow-map comparison per pixel (compute)")
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "normal", "mask"})
+      .same_size({"depth", "normal", "mask"})
       .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
             "Subtracted from the receiver depth before the comparison")
       .build<HardMaskPass>();

@@ -1,11 +1,12 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Lambert + ambient with base colour, shadowed by the technique's shadow_mask, then tone
 // mapped (Reinhard on luminance-free RGB) and encoded with gamma 2.2 into RGBA8.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba8, binding = 0) uniform writeonly image2D u_color;
 uniform sampler2D u_albedo;
-uniform sampler2D u_normal;
-uniform sampler2D u_position;
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_shadow_mask;
 uniform vec3 u_light_dir;     // unit, light -> scene
 uniform vec3 u_light_pos;
@@ -19,7 +20,7 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(u_color);
   if (any(greaterThanEqual(p, size))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   if (pos.w <= 0.0) {
     // Background: a quiet vertical gradient so silhouettes read against it.
     float t = float(p.y) / float(size.y);
@@ -27,7 +28,7 @@ void main() {
     return;
   }
   vec3 albedo = texelFetch(u_albedo, p, 0).rgb;
-  vec3 n = normalize(texelFetch(u_normal, p, 0).xyz);
+  vec3 n = normalize(gbuffer_normal(u_normal, p));
   float visibility = clamp(texelFetch(u_shadow_mask, p, 0).r, 0.0, 1.0);
   vec3 l = -u_light_dir;
   float cone = 1.0;

@@ -19,7 +19,7 @@ class LightingPass final : public exec::PassImpl {
     const exec::FrameInputs& f = ctx.frame();
     ctx.bind_sampled(p, "u_albedo", "albedo");
     ctx.bind_sampled(p, "u_normal", "normal");
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_shadow_mask", "shadow_mask");
     ctx.bind_image(0, "color", GL_WRITE_ONLY);
     const gl::Program& prog = p.program();
@@ -43,11 +43,11 @@ exec::PassType lighting_pass_type() {
       .describe("Lambert + ambient, shadowed by shadow_mask, tone mapped to RGBA8 (compute)")
       .sampled("albedo")
       .sampled("normal")
-      .sampled("position")
+      .sampled("depth", {Format::R32F})
       .sampled("shadow_mask", {Format::R8, Format::R16F, Format::R32F})
       .imported("light")
       .image_out("color", {Format::RGBA8})
-      .same_size({"albedo", "normal", "position", "shadow_mask", "color"})
+      .same_size({"albedo", "normal", "depth", "shadow_mask", "color"})
       .real("ambient", 0.25, 0.0, 2.0, "", "Ambient term added to the shadowed direct light")
       .side_effect()
       .build<LightingPass>();

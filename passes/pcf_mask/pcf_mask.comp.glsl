@@ -12,8 +12,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "shadow_taps.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;
-uniform sampler2D u_normal;
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2DShadow u_shadow_map;  // linear, clamp, depth compare (LEQUAL)
 uniform float u_depth_bias;            // window depth
 uniform int u_box_size;                // texels, odd
@@ -25,7 +25,7 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
   float lit = 1.0;
   Receiver r;
-  if (shadow_receiver(u_position, u_normal, p, r)) {
+  if (shadow_receiver(u_depth, u_normal, p, r)) {
     vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
     float sum = 0.0;
 #if PCF_KERNEL_BOX
@@ -42,6 +42,6 @@ void main() {
     lit = sum / float(u_samples);
 #endif
   }
-  if (self_shadowed(u_position, u_normal, p)) lit = 0.0;
+  if (self_shadowed(u_depth, u_normal, p)) lit = 0.0;
   imageStore(u_mask, p, vec4(lit));
 }

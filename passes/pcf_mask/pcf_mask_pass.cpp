@@ -23,7 +23,7 @@ class PcfMaskPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.compute = kShader, .defines = {{"PCF_KERNEL_BOX", box ? "1" : "0"}}});
     if (!p.valid()) return *p.last_error();
     if (!compare_) compare_.emplace(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp, true);
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", compare_->id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
@@ -47,7 +47,7 @@ class PcfMaskPass final : public exec::PassImpl {
 exec::PassType pcf_mask_pass_type() {
   return shadow_receiver_pass("pcf_mask", "Percentage-closer filtering with a box or rotated Vogel-disk kernel (compute)")
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "normal", "mask"})
+      .same_size({"depth", "normal", "mask"})
       .enumeration("kernel", "box", {"box", "vogel"},
                    "box: N x N taps one texel apart; vogel: Vogel disk rotated per pixel by interleaved gradient noise")
       .integer("box_size", 5, 1, 15, "texels", "Box kernel width N (odd; kernel = box)").step(2)

@@ -19,8 +19,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "pcf_mask/shadow_taps.glsl"
 
 layout(r32f, binding = 0) uniform writeonly image2D u_blocker;
-uniform sampler2D u_position;
-uniform sampler2D u_normal;
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;   // raw depth: nearest, no comparison
 uniform float u_depth_bias;       // window depth
 uniform int u_samples;
@@ -32,7 +32,7 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_blocker)))) return;
   float mean_blocker = 0.0;
   Receiver r;
-  if (shadow_receiver(u_position, u_normal, p, r)) {
+  if (shadow_receiver(u_depth, u_normal, p, r)) {
     float d_r = light_distance(r.coord.z);
     float width = min(blocker_search_width_uv(d_r) * u_light_size_scale, u_max_search_uv);
     float radius = 0.5 * width;

@@ -16,8 +16,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "pcf_mask/shadow_taps.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;
-uniform sampler2D u_normal;
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_blocker;           // mean blocker distance, world units; 0 = none
 uniform sampler2DShadow u_shadow_map;  // linear, clamp, depth compare (LEQUAL)
 uniform float u_depth_bias;            // window depth
@@ -31,7 +31,7 @@ void main() {
   float lit = 1.0;
   float d_b = texelFetch(u_blocker, p, 0).r;
   Receiver r;
-  if (d_b > 0.0 && shadow_receiver(u_position, u_normal, p, r)) {
+  if (d_b > 0.0 && shadow_receiver(u_depth, u_normal, p, r)) {
     float d_r = light_distance(r.coord.z);
     float w_penumbra = min(penumbra_width_uv(d_r, d_b) * u_light_size_scale, u_max_filter_uv);
     float radius = 0.5 * w_penumbra;
@@ -41,6 +41,6 @@ void main() {
       sum += pcf_tap(u_shadow_map, r, vogel_disk_sample(i, u_samples, phi) * radius, u_depth_bias);
     lit = sum / float(u_samples);
   }
-  if (self_shadowed(u_position, u_normal, p)) lit = 0.0;
+  if (self_shadowed(u_depth, u_normal, p)) lit = 0.0;
   imageStore(u_mask, p, vec4(lit));
 }

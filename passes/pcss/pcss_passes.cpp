@@ -39,7 +39,7 @@ class BlockerSearchPass final : public exec::PassImpl {
     if (!p.valid()) return *p.last_error();
     // Raw depths for textureGather: no comparison (the filter pass uses the compare sampler).
     if (!raw_) raw_.emplace(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp, false);
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", raw_->id());
     ctx.bind_image(0, "blocker", GL_WRITE_ONLY);
@@ -64,7 +64,7 @@ class FilterPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.compute = "passes/pcss/pcss_filter.comp.glsl"});
     if (!p.valid()) return *p.last_error();
     if (!compare_) compare_.emplace(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp, true);
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_blocker", "blocker");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", compare_->id());
@@ -90,7 +90,7 @@ exec::PassType pcss_blocker_search_pass_type() {
   return shadow_receiver_pass("pcss_blocker_search",
                        "PCSS blocker search: mean blocker distance (world units, 0 = none) (compute)")
       .image_out("blocker", {Format::R32F})
-      .same_size({"position", "normal", "blocker"})
+      .same_size({"depth", "normal", "blocker"})
       .param(samples_param("Blocker-search taps (each a textureGather of 4 texels), Vogel disk rotated per pixel"))
       .param(light_size_scale_param())
       .param(depth_bias_param())
@@ -103,7 +103,7 @@ exec::PassType pcss_filter_pass_type() {
                        "PCSS penumbra estimate (Fernando 2005 eq. 1) and PCF of that width (compute)")
       .sampled("blocker", {Format::R32F})
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "normal", "blocker", "mask"})
+      .same_size({"depth", "normal", "blocker", "mask"})
       .param(samples_param("PCF taps (bilinear hardware comparisons), Vogel disk rotated per pixel"))
       .param(light_size_scale_param())
       .param(depth_bias_param())

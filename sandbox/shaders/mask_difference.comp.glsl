@@ -1,18 +1,18 @@
 #version 450 core
 // Error image of compare mode: |a - b| of two shadow masks (visibility, 1 = lit) per pixel, and
-// receiver coverage (gbuffer_position.w > 0 on geometry, see plugin/frame_graph.h) so the display
+// receiver coverage (gbuffer_depth > 0 on geometry, see technique/frame_graph.h) so the display
 // greys out the background as the CLI's heat maps do. r = |a - b|, g = coverage (0 or 1).
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0, rg16f) uniform writeonly image2D difference;
 uniform sampler2D mask_a;
 uniform sampler2D mask_b;
-uniform sampler2D position;
+uniform sampler2D depth;
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(difference)))) return;
   float a = texelFetch(mask_a, p, 0).r;
   float b = texelFetch(mask_b, p, 0).r;
-  float covered = texelFetch(position, p, 0).w > 0.0 ? 1.0 : 0.0;
+  float covered = texelFetch(depth, p, 0).r > 0.0 ? 1.0 : 0.0;
   imageStore(difference, p, vec4(abs(a - b), covered, 0.0, 0.0));
 }

@@ -4,8 +4,9 @@
 // green = 1 texel a pixel, blue = one texel spread over many pixels (blocky shadows), red = many
 // texels a pixel (aliasing, wasted resolution). Pixels with no receiver are dark grey.
 #include "colormap.glsl"
+#include "gbuffer/gbuffer_read.glsl"
 
-uniform sampler2D position;       // gbuffer_position: world xyz, w > 0 on receivers
+uniform sampler2D depth;          // gbuffer_depth: linear view depth, 0 = background
 uniform mat4 light_view_proj;
 uniform float shadow_size;        // texels
 uniform float zoom;               // the view's zoom (derivatives are per displayed pixel)
@@ -13,7 +14,8 @@ in vec2 v_uv;
 out vec4 frag_color;
 
 void main() {
-  vec4 p = texture(position, v_uv);
+  ivec2 pixel = clamp(ivec2(v_uv * vec2(frame_screen.xy)), ivec2(0), frame_screen.xy - 1);
+  vec4 p = gbuffer_position(depth, pixel);
   vec4 c = light_view_proj * vec4(p.xyz, 1.0);
   vec2 texel = (c.xy / c.w * 0.5 + 0.5) * shadow_size;
   float density = max(length(dFdx(texel)), length(dFdy(texel))) * zoom;

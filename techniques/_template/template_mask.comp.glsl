@@ -1,19 +1,20 @@
 #version 450 core
-// template_mask: one thread per screen pixel. Reads the G-buffer position, projects it into
+#include "gbuffer/gbuffer_read.glsl"
+// template_mask: one thread per screen pixel. Rebuilds the G-buffer position, projects it into
 // the shadow map (shadow_common.glsl, found in passes/common) and writes the shadow mask
 // (1 = lit). Replace the body with your technique.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/shadow_common.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;    // gbuffer_position: world xyz, w > 0 on geometry
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_shadow_map;  // light window depth
 uniform float u_strength;        // the technique parameter shadow_strength, [0, 1]
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   float lit = 1.0;
   if (pos.w > 0.0) {
     vec3 c = shadow_coord(pos.xyz);  // (shadow-map uv, window depth)

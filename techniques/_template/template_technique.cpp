@@ -16,7 +16,7 @@ class TemplateMaskPass final : public exec::PassImpl {
     // Shader paths are repository-relative; the program is cached and hot-reloaded.
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/_template/template_mask.comp.glsl"});
     if (!p.valid()) return *p.last_error();       // compile error: file and line, shown in the UI
-    ctx.bind_sampled(p, "u_position", "position");  // slot -> texture unit -> uniform
+    ctx.bind_sampled(p, "u_depth", "depth");  // slot -> texture unit -> uniform
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);       // layout(binding = 0) in the shader
     passes::set_shadow_uniforms(p.program(), ctx.frame());  // shadow_common.glsl's uniforms
@@ -33,10 +33,10 @@ exec::PassType template_mask_pass_type() {
   // the barriers from each slot's usage (image_out then sampled = a texture-fetch barrier).
   return exec::PassDeclBuilder("template_mask")
       .describe("Template: hard shadow test scaled by a strength (compute)")
-      .sampled("position", {Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
       .sampled("shadow_map", {Format::DEPTH32F})
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "mask"})
+      .same_size({"depth", "mask"})
       .real("strength", 1.0, 0.0, 1.0, "", "0 = no shadow, 1 = full hard shadow (mask = 1 - strength * occluded)")
       .build<TemplateMaskPass>();
 }

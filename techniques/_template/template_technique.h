@@ -6,7 +6,7 @@
 
 namespace penumbra::template_technique {
 
-// "template_mask": G-buffer position + shadow map -> shadow_mask (compute).
+// "template_mask": G-buffer view depth (position rebuilt) + shadow map -> shadow_mask (compute).
 exec::PassType template_mask_pass_type();
 
 // Adds the technique (graph techniques/_template/template.json) and its pass type.

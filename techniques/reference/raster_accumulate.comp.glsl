@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Raster reference, one light sample: adds the hard visibility of every receiver pixel as seen
 // from one sample point of the emitter disk (1 = the point sees the receiver) to the running sum.
 // One depth comparison per pixel at the nearest texel of that point's perspective depth map
@@ -14,8 +15,8 @@
 // receivers get almost none, grazing ones up to 10 texels.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(r32f, binding = 0) uniform image2D u_accumulation;  // sum of visibilities so far
-uniform sampler2D u_position;     // gbuffer_position: world xyz, w > 0 on geometry
-uniform sampler2D u_normal;       // gbuffer_normal: world unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_sample_map;   // DEPTH32F window depth from the sample point
 uniform mat4 u_sample_view_proj;  // world -> the sample map's clip space
 uniform int u_sample_is_point;    // 1: point sample (perspective map), 0: parallel (orthographic)
@@ -29,9 +30,9 @@ uniform float u_texel_world;      // orthographic: map width / map size, world u
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_accumulation)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   if (pos.w <= 0.0) return;
-  vec3 n = texelFetch(u_normal, p, 0).xyz;
+  vec3 n = gbuffer_normal(u_normal, p);
   vec3 to_light = -u_sample_dir;  // parallel sample: the same direction for every receiver
   float depth = 0.0;             // along the map's axis from a point sample, world units
   if (u_sample_is_point == 1) {

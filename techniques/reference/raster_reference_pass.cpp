@@ -66,7 +66,7 @@ class RasterReferencePass final : public exec::PassImpl {
     const float normal_offset = 1e-4f * (bounds.empty() ? 1.0f : glm::length(bounds.extent()));
     const int todo = std::min(ctx.integer("maps_per_frame"), samples - done_);
     if (todo > 0) {
-      ctx.bind_sampled(acc, "u_position", "position");  // units 0, 1
+      ctx.bind_sampled(acc, "u_depth", "depth");  // units 0, 1
       ctx.bind_sampled(acc, "u_normal", "normal");
       constexpr GLuint map_unit = 2;
       acc.program().set("u_sample_map", static_cast<int>(map_unit));
@@ -91,7 +91,7 @@ class RasterReferencePass final : public exec::PassImpl {
       }
     }
 
-    ctx.bind_sampled(resolve, "u_position", "position");
+    ctx.bind_sampled(resolve, "u_depth", "depth");
     ctx.bind_image(0, "accumulation", GL_READ_ONLY);
     ctx.bind_image(1, "mask", GL_WRITE_ONLY);
     resolve.program().set("u_count", static_cast<float>(std::max(done_, 1)));
@@ -138,11 +138,11 @@ exec::PassType raster_reference_pass_type() {
       .imported("scene")
       .imported("light")
       .imported("camera", false)
-      .sampled("position", {Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
       .sampled("normal")
       .image_inout("accumulation", {Format::R32F})
       .image_out("mask", {Format::R32F})
-      .same_size({"position", "normal", "accumulation", "mask"})
+      .same_size({"depth", "normal", "accumulation", "mask"})
       .param(int_param("samples", 1024, 1, 65536, "", "Light sample points N (one shadow map each)"))
       .param(int_param("map_size", 4096, 64, 16384, "texels", "Resolution of each sample point's depth map"))
       .param(int_param("maps_per_frame", 16, 1, 65536, "", "Shadow maps accumulated per frame (progressive: keeps the sandbox interactive)"))

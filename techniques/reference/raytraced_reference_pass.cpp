@@ -7,6 +7,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "exec/gbuffer_readback.h"
 #include "exec/gpu_scene.h"
 #include "raytraced_reference.h"
 #include "reference_frame_key.h"
@@ -79,19 +80,17 @@ class RaytracedReferencePass final : public exec::PassImpl {
     if (!rs) return rs.error();
     // G-buffer read-back; rows stay in GL order (bottom to top): the trace is per pixel, and the
     // result is uploaded in the same order.
-    const gl::Texture& pos_tex = ctx.texture("position");
-    const gl::Texture& nrm_tex = ctx.texture("normal");
-    const int w = pos_tex.width(), h = pos_tex.height();
-    const std::vector<float> pos = pos_tex.read(), nrm = nrm_tex.read();
-    const int nc = nrm_tex.info().channels;
+    const gl::Texture& depth_tex = ctx.texture("depth");
+    const int w = depth_tex.width(), h = depth_tex.height();
+    const std::vector<glm::vec4> pos = exec::read_positions(depth_tex, ctx.frame().camera);
+    std::vector<glm::vec3> normals = exec::read_normals(ctx.texture("normal"));
     const size_t n = static_cast<size_t>(w) * h;
-    std::vector<glm::vec3> positions(n), normals(n);
+    std::vector<glm::vec3> positions(n);
     metrics::CoverageMask coverage(n, 0);
     size_t receivers = 0;
     for (size_t i = 0; i < n; ++i) {
-      positions[i] = glm::vec3(pos[4 * i], pos[4 * i + 1], pos[4 * i + 2]);
-      normals[i] = glm::vec3(nrm[nc * i], nc > 1 ? nrm[nc * i + 1] : 0.0f, nc > 2 ? nrm[nc * i + 2] : 0.0f);
-      coverage[i] = pos[4 * i + 3] > 0.0f ? 1 : 0;
+      positions[i] = glm::vec3(pos[i]);
+      coverage[i] = pos[i].w > 0.0f ? 1 : 0;
       receivers += coverage[i];
     }
     // A zero-size light is traced with one ray per sample point (trace_visibility).
@@ -139,10 +138,10 @@ exec::PassType raytraced_reference_pass_type() {
       .imported("scene")
       .imported("light")
       .imported("camera", false)
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal")
+      .sampled("depth", {Format::R32F})
+      .sampled("normal", {Format::RG16})
       .image_out("mask", {Format::R32F})
-      .same_size({"position", "normal", "mask"})
+      .same_size({"depth", "normal", "mask"})
       .param(int_param("rays", 256, 1, 65536, "", "Shadow rays per pixel M (stratified light points)"))
       .param(int_param("seed", 0, 0, 1000000, "", "light_sample_points seed (same as the raster reference's)"))
       .param(int_param("pixel_samples", 1, 1, 16, "", "K x K sub-pixel samples per pixel on the receiver's tangent plane (box filter; 4 with a "

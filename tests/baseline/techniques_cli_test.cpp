@@ -109,7 +109,7 @@ TEST(GraphCommand, DocumentedExamplesAndTechniqueGraphsCompile) {
   EXPECT_NE(composed.output.find("composed into the frame"), std::string::npos) << composed.output;
   CommandRun raw = run_cli("graph " + pmchss + " --no-frame");
   EXPECT_EQ(raw.exit_code, 2) << raw.output;
-  EXPECT_NE(raw.output.find("gbuffer_position"), std::string::npos) << raw.output;
+  EXPECT_NE(raw.output.find("gbuffer_depth"), std::string::npos) << raw.output;
 }
 
 // A technique README's parameter table is generated from its graph JSON

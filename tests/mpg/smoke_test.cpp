@@ -62,7 +62,7 @@ TEST(MpgSmoke, DebugViewsShowThePenumbraAndD) {
   rig.set_scene(test::make_scene("ball", {{"light_size", 1.5f}}));
   rig.render();
   metrics::MaskImage mask = rig.shadow_mask();
-  metrics::MaskImage depth = rig.read("gbuffer_position", 3);
+  metrics::MaskImage depth = rig.read("gbuffer_depth");
   metrics::RgbaImage penumbra = rig.read_rgba("debug_penumbra"), distance = rig.read_rgba("debug_distance");
   ASSERT_EQ(penumbra.width, 160);
   ASSERT_EQ(distance.width, 160);

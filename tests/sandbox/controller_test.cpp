@@ -129,7 +129,8 @@ TEST_F(Fixture, ViewerKeepsTheResourceAliveAndShowsIt) {
   ASSERT_TRUE(stats.loaded);
   EXPECT_EQ(stats.width, 96);
   EXPECT_GT(stats.variance, 10.0);  // heat-mapped stripes
-  // Depth is linearised with the camera's near/far and gets a world-unit range.
+  // The view depth is in world units and gets a world-unit range (the z-buffer is linearised
+  // with the camera's near/far to the same range).
   ASSERT_TRUE(controller->view_resource("gbuffer_depth"));
   EXPECT_GT(controller->viewer().max, controller->viewer().min);
   EXPECT_FLOAT_EQ(controller->viewer().min, controller->camera().near_plane);

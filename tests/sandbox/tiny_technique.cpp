@@ -17,7 +17,7 @@ class FillPass final : public exec::PassImpl {
     if (ctx.boolean("refuse")) return make_error("sandbox_tiny: 'refuse' is on, so this frame is refused");
     gl::ShaderProgram& p = ctx.program({.compute = "tests/sandbox/shaders/tiny_fill.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "position", "position");
+    ctx.bind_sampled(p, "depth", "depth");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     p.program().set("level", ctx.real("level"));
     p.program().set("stripe_width", ctx.integer("stripe_width"));
@@ -43,7 +43,7 @@ class ScalePass final : public exec::PassImpl {
 void register_passes(exec::PassLibrary& library) {
   graph::PassTypeDecl fill;
   fill.name = "sandbox_test_fill";
-  fill.slots = {{"position", Access::read, SlotKind::texture, {Format::RGBA32F}, Usage::sampled, true},
+  fill.slots = {{"depth", Access::read, SlotKind::texture, {Format::R32F}, Usage::sampled, true},
                 {"mask", Access::write, SlotKind::texture, {Format::R16F}, Usage::image_store, true}};
   fill.params = {
       ParamDesc{.name = "level", .type = ParamType::real, .default_value = 0.5, .min = 0.0, .max = 1.0},
@@ -51,7 +51,7 @@ void register_passes(exec::PassLibrary& library) {
       ParamDesc{.name = "pattern", .type = ParamType::enumeration, .default_value = std::string("stripes"),
                 .options = {"stripes", "checker"}},
       ParamDesc{.name = "refuse", .type = ParamType::boolean, .default_value = false}};
-  fill.same_size_groups = {{"position", "mask"}};
+  fill.same_size_groups = {{"depth", "mask"}};
   library.add({fill, [] { return std::make_unique<FillPass>(); }});
 
   graph::PassTypeDecl scale;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // vsm_mask: one thread per screen pixel. The receiver's light distance t against the moments
 // (mean m1, mean of squares m2) at its shadow-map texel: lit when t <= m1, else the Chebyshev
 // bound s^2 / (s^2 + (t - m1)^2), s^2 = max(m2 - m1^2, min_variance), with light-bleeding
@@ -7,7 +8,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/shadow_common.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;  // gbuffer_position: world xyz, w > 0 on geometry
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_moments;   // (mean, mean of squares) of the light distance, world units
 uniform float u_min_variance;  // world units^2
 uniform float u_bleeding;      // [0, 1)
@@ -15,7 +16,7 @@ uniform float u_bleeding;      // [0, 1)
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   float lit = 1.0;
   if (pos.w > 0.0) {
     vec3 c = shadow_coord(pos.xyz);

@@ -32,7 +32,7 @@ class MaskPass final : public exec::PassImpl {
     gl::Texture& esm = ctx.texture("esm");
     Result<EsmViews> views = frame_views(ctx, esm.width());
     if (!views) return views.error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
@@ -62,7 +62,7 @@ exec::PassType mask_pass_type() {
              "esm_mask", "Extended shadow map test: point-filtered depth and edge depth, bilinear edge distance (compute)")
       .sampled("esm", {Format::RGBA32F})
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "normal", "mask"})
+      .same_size({"depth", "normal", "mask"})
       .same_size({"shadow_map", "esm"})
       .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
             "Subtracted from the receiver depth before the depth and edge-depth comparisons")

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // The extended shadow map's shadow test (Bujnak, section 3.2), one receiver pixel per thread:
 // the map depth and the edge depth are compared point-filtered at the nearest texel, the edge
 // distance is interpolated bilinearly over the 2x2 texels around the receiver, and the result
@@ -24,8 +25,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "esm_common.glsl"
 #include "esm_views.glsl"
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;
-uniform sampler2D u_normal;
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;   // the depth pass's biased depth (nearest texel fetches)
 uniform sampler2D u_esm;          // RGBA32F extended map (texel fetches, a gather of the mask)
 uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
@@ -129,10 +130,10 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   float lit = 1.0;
   if (pos.w > 0.0) {
-    vec3 n = texelFetch(u_normal, p, 0).xyz;
+    vec3 n = gbuffer_normal(u_normal, p);
     lit = faces_away_from_light(pos.xyz, n) ? 0.0 : visibility(p, pos.xyz, normalize(n));
   }
   imageStore(u_mask, p, vec4(lit));

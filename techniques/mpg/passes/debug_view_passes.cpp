@@ -31,7 +31,7 @@ class PenumbraViewPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.compute = std::string(kShaderDir) + "penumbra_view.comp.glsl"});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_mask", "mask");
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_image(0, "output", GL_WRITE_ONLY);
     ctx.dispatch_over(p, ctx.texture("output"));
     return {};
@@ -56,9 +56,9 @@ exec::PassType penumbra_view_pass_type() {
   return exec::PassDeclBuilder("mpg_penumbra_view")
       .describe("mpg debug: Figure 4, penumbra marked with a dark gradient, umbra shaded (Cherry & Kooima 4.2)")
       .sampled("mask", {Format::R8, Format::R16F, Format::R32F})
-      .sampled("position", {Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
       .image_out("output", {Format::RGBA8})
-      .same_size({"mask", "position", "output"})
+      .same_size({"mask", "depth", "output"})
       .build<PenumbraViewPass>();
 }
 

@@ -31,7 +31,7 @@ class DistanceMapPass final : public exec::PassImpl {
                      {"ALTERATION", alteration_define(alteration)},
                      {"SHADOW_TEST", ctx.enumeration("shadow_test") == "nearest" ? "0" : "1"}}});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     if (!nearest_) nearest_.emplace(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", nearest_->id());
@@ -75,7 +75,7 @@ exec::PassType distance_map_pass_type() {
       "mpg pass 2: hard shadow bit S and filter control D from the occluder distance (Cherry & Kooima 3.1)");
   b.image_out("distance_map", {Format::RGBA16F})
       .image_out("kernel_shape", {Format::RGBA16F})
-      .same_size({"position", "normal", "distance_map", "kernel_shape"})
+      .same_size({"depth", "normal", "distance_map", "kernel_shape"})
       .enumeration("shadow_test", "bilinear", {"bilinear", "nearest"},
                    "Pass 2's hard shadow S: bilinear = the 2x2 nearest texels compared and weighted bilinearly (keeps "
                    "the edge's position inside a texel); nearest = the paper's bit from one texel")

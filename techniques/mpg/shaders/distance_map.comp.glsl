@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Pass 2 (Cherry & Kooima, sections 3.1-3.2): the distance map. Per pixel, the hard shadow S
 // (SHADOW_TEST: the paper's bit from the nearest texel, or the bilinear weight of the 2x2 texels;
 // hard_shadow() below) and the filter control D from the occluder distance d_r - d_b
@@ -41,8 +42,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(rgba16f, binding = 0) uniform writeonly image2D u_distance_map;
 layout(rgba16f, binding = 1) uniform writeonly image2D u_kernel_shape;
-uniform sampler2D u_position;      // world position, w = linear view depth (0 = background)
-uniform sampler2D u_normal;        // world normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;    // light window depth, nearest, clamp to edge
 uniform float u_depth_bias;        // window depth
 uniform float u_distance_power;    // Dp
@@ -118,13 +119,13 @@ float filter_control(float d_r, float d_b, float pixels_per_world) {
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_distance_map)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   vec4 value = vec4(0.0, 0.0, max(pos.w, 0.0), 0.0);
   KernelShape shape;
   shape.a = vec3(1.0, 0.0, 1.0);
   shape.depth_gradient = vec2(0.0);
   if (pos.w > 0.0) {
-    vec3 n = normalize(texelFetch(u_normal, p, 0).xyz);
+    vec3 n = normalize(gbuffer_normal(u_normal, p));
     shape = receiver_kernel_shape(u_view_proj, vec2(imageSize(u_distance_map)), pos.xyz, n, pos.w,
                                   u_anisotropic == 1, u_focal_px);
     vec3 c = shadow_coord(pos.xyz);

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Debug view of Cherry & Kooima's Figure 4 ("a special penumbra type that clearly distinguishes
 // umbrae from penumbrae regions. The dark lines indicate penumbra and the shaded portion within
 // is the umbra"), from the final shadow_mask:
@@ -10,14 +11,14 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(rgba8, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_mask;      // visibility, 1 = lit
-uniform sampler2D u_position;  // w = 0: background
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_output)))) return;
   float m = texelFetch(u_mask, p, 0).r;
   vec3 c;
-  if (texelFetch(u_position, p, 0).w <= 0.0) c = vec3(0.0);
+  if (gbuffer_position(u_depth, p).w <= 0.0) c = vec3(0.0);
   else if (m >= 0.99) c = vec3(1.0);
   else if (m <= 0.01) c = ((p.x + p.y) % 8 < 2) ? vec3(0.45) : vec3(0.65);
   else c = mix(vec3(0.02, 0.02, 0.12), vec3(0.35, 0.4, 0.75), m);

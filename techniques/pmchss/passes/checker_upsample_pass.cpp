@@ -16,7 +16,7 @@ class CheckerUpsamplePass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/pmchss/shaders/checker_upsample.comp.glsl"});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_checker", "checker");
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     p.program().set("u_depth_epsilon", ctx.real("depth_epsilon"));
     gl::Texture& mask = ctx.texture("mask");
@@ -31,9 +31,9 @@ exec::PassType checker_upsample_pass_type() {
   return exec::PassDeclBuilder("pmchss_checker_upsample")
       .describe("Checkerboard shadow mask -> full resolution, depth-aware (Sterna 2018, 3)")
       .sampled("checker", {Format::RG16F})
-      .sampled("position", {Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "mask"})
+      .same_size({"depth", "mask"})
       .param(real_param("depth_epsilon", 0.001, 1e-6, 10.0, "world units",
                         "eps of the upsample weight 1 / (eps + |delta linear depth|)"))
       .build<CheckerUpsamplePass>();

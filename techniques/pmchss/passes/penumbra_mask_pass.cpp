@@ -34,7 +34,7 @@ class PenumbraMaskPass final : public exec::PassImpl {
                      {blocker_depth ? "OUTPUT_BLOCKER_DEPTH" : "OUTPUT_PENUMBRA", "1"}}});
     if (!p.valid()) return *p.last_error();
     if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", nearest_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
@@ -55,8 +55,8 @@ exec::PassType penumbra_mask_pass_type() {
   exec::PassDeclBuilder b("pmchss_penumbra_mask");
   b.describe("pmchss penumbra mask: reduced-resolution blocker search, then max filter and "
              "Gaussian blur in the same dispatch (Sterna 2018, 2.2)")
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
+      .sampled("normal", {Format::RG16})
       .sampled("shadow_map", {Format::DEPTH32F})
       .imported("light", false)
       .image_out("mask", {Format::R16F});

@@ -40,7 +40,7 @@ class ShadowMaskPass final : public exec::PassImpl {
       linear_ = gl::Sampler(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp);
       compare_ = gl::Sampler(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp, true);
     }
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", nearest_.id());
     ctx.bind_sampled(p, "u_shadow_cmp", "shadow_map", compare_.id());

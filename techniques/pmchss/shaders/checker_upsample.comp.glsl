@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Checkerboard upsample (Sterna 2018, section 3): pixels with (x + y) even were computed and
 // are unpacked from the RG16F screen/2 target (see shadow_mask.comp.glsl for the packing); each
 // other pixel is the average of its four computed neighbours weighted by
@@ -7,7 +8,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_checker;   // RG16F screen/2, nearest
-uniform sampler2D u_position;  // w = linear view depth (world units), 0 = background
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform float u_depth_epsilon; // world units
 
 // Value of a computed pixel, or -1 when it lies outside the packed target (odd sizes).
@@ -22,7 +23,7 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(u_mask);
   if (any(greaterThanEqual(p, size))) return;
-  float depth = texelFetch(u_position, p, 0).w;
+  float depth = gbuffer_position(u_depth, p).w;
   float result = 1.0;  // background stays lit
   if (depth > 0.0) {
     float own = ((p.x + p.y) & 1) == 0 ? computed(p) : -1.0;
@@ -35,7 +36,7 @@ void main() {
       for (int i = 0; i < 4; ++i) {
         ivec2 q = p + offsets[i];
         if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-        float d = texelFetch(u_position, q, 0).w;
+        float d = gbuffer_position(u_depth, q).w;
         float v = computed(q);
         if (d <= 0.0 || v < 0.0) continue;
         float w = 1.0 / (u_depth_epsilon + abs(depth - d));

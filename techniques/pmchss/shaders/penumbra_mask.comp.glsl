@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Penumbra mask (Sterna 2018, section 2.2): the blocker search of Listing 3 run at a reduced
 // resolution (screen/4 or screen/2), then -- in the same dispatch -- the optional 7x7 max filter
 // and the separable 7x7 Gaussian blur (sigma 3) the paper applies to the mask.
@@ -33,8 +34,8 @@ const int kRegionTexels = kRegion * kRegion;
 const int kThreads = kRegionTexels;
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;    // full resolution, w = linear view depth (0: background)
-uniform sampler2D u_normal;      // full resolution, world-space unit normal (receiver plane)
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;  // raw window depth, nearest (Listing 3's pointClampSampler)
 uniform int u_default_one;       // section 2.2: write 1 instead of 0 where no blocker is found
 uniform float u_blur_sigma;      // mask texels (section 2.2: 3)
@@ -50,12 +51,12 @@ float search(ivec2 p, ivec2 mask_size, ivec2 full_size) {
 #ifdef OUTPUT_BLOCKER_DEPTH
   value = 1.0;
 #endif
-  vec4 pos = texelFetch(u_position, full, 0);
+  vec4 pos = gbuffer_position(u_depth, full);
   if (pos.w <= 0.0) return value;
   Receiver r;
   r.coord = shadow_coord(pos.xyz);
   if (!pmchss_in_shadow_frustum(r.coord)) return value;
-  r.dz_duv = receiver_depth_gradient(u_position, full, pos.xyz, texelFetch(u_normal, full, 0).xyz, r.coord);
+  r.dz_duv = receiver_depth_gradient(u_depth, full, pos.xyz, gbuffer_normal(u_normal, full), r.coord);
   // Noise on the mask's own pixel grid: neighbouring mask texels get different rotations.
   float phi = pmchss_noise_phi(p, false);
   float blocker;
@@ -114,7 +115,7 @@ void filter_2d(int src, int dst, bool gaussian, inout ivec2 lo, inout ivec2 hi, 
 
 void main() {
   ivec2 size = imageSize(u_mask);
-  ivec2 full_size = textureSize(u_position, 0);
+  ivec2 full_size = textureSize(u_depth, 0);
   ivec2 origin = ivec2(gl_WorkGroupID.xy) * TILE - kHalo;
 
   ivec2 searched = ivec2(gl_LocalInvocationID.xy);  // this invocation's region texel

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Full-resolution shadow mask (Sterna 2018): FILTER_SAMPLES Vogel taps of hardware comparison
 // over a kernel of penumbra x shadow_filter_max_size (Listing 6). Where the penumbra comes from
 // is PENUMBRA_SOURCE (a define, chosen by the graph's variant):
@@ -20,8 +21,8 @@ layout(rg16f, binding = 0) uniform writeonly image2D u_mask;
 #else
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 #endif
-uniform sampler2D u_position;          // full resolution, w = linear view depth
-uniform sampler2D u_normal;            // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;        // raw window depth, nearest
 uniform sampler2DShadow u_shadow_cmp;  // same texture, linear + depth comparison
 #if PENUMBRA_SOURCE == 1
@@ -31,15 +32,15 @@ uniform sampler2D u_min_depth;         // shadow/4 blurred min window depth, lin
 #endif
 
 float shadow_at(ivec2 pixel, ivec2 screen, bool checker) {
-  vec4 pos = texelFetch(u_position, pixel, 0);
+  vec4 pos = gbuffer_position(u_depth, pixel);
   if (pos.w <= 0.0) return 1.0;  // background: lit, by the shadow_mask contract
   // A receiver facing away from the light is in its own shadow (closed geometry); its depth is
   // too close to the occluding front face for any bias to classify it reliably.
-  if (faces_away_from_light(pos.xyz, texelFetch(u_normal, pixel, 0).xyz)) return 0.0;
+  if (faces_away_from_light(pos.xyz, gbuffer_normal(u_normal, pixel))) return 0.0;
   Receiver r;
   r.coord = shadow_coord(pos.xyz);
   if (!pmchss_in_shadow_frustum(r.coord)) return 1.0;
-  r.dz_duv = receiver_depth_gradient(u_position, pixel, pos.xyz, texelFetch(u_normal, pixel, 0).xyz, r.coord);
+  r.dz_duv = receiver_depth_gradient(u_depth, pixel, pos.xyz, gbuffer_normal(u_normal, pixel), r.coord);
   vec3 c = r.coord;
   float phi = pmchss_noise_phi(pixel, checker);
 #if PENUMBRA_MAPPING == 2
@@ -61,7 +62,7 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 target = imageSize(u_mask);
   if (any(greaterThanEqual(p, target))) return;
-  ivec2 screen = textureSize(u_position, 0);
+  ivec2 screen = textureSize(u_depth, 0);
 #ifdef CHECKER
   ivec2 even_row = ivec2(2 * p.x, 2 * p.y);          // (x + y) even on row 2cy
   ivec2 odd_row = ivec2(2 * p.x + 1, 2 * p.y + 1);   // and on row 2cy + 1

@@ -15,8 +15,8 @@ using graph::Format;
 exec::PassDeclBuilder search_pass(const char* name, const char* description) {
   exec::PassDeclBuilder b(name);
   b.describe(description)
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
+      .sampled("normal", {Format::RG16})
       .imported("light", false);
   for (graph::ParamDesc& d : range_params()) b.param(std::move(d));
   for (graph::ParamDesc& d : search_params()) b.param(std::move(d));
@@ -36,7 +36,7 @@ class SearchRowsPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/sspcss/shaders/blocker_search_x.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_projected", "projected");
     ctx.bind_image(0, "rows", GL_WRITE_ONLY);
@@ -52,7 +52,7 @@ class SearchColumnsPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/sspcss/shaders/blocker_search_y.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_rows", "rows");
     ctx.bind_image(0, "blocker", GL_WRITE_ONLY);
@@ -70,7 +70,7 @@ class SearchPoissonPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/sspcss/shaders/blocker_search_poisson.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_projected", "projected");
     ctx.bind_image(0, "blocker", GL_WRITE_ONLY);
@@ -93,7 +93,7 @@ exec::PassType blocker_search_x_pass_type() {
                      "SSPCSS blocker search along rows: mean blocker distance and coverage per row (compute)")
       .sampled("projected", {Format::RGBA32F})
       .image_out("rows", {Format::RGBA32F})
-      .same_size({"position", "normal", "projected", "rows"})
+      .same_size({"depth", "normal", "projected", "rows"})
       .param(separable_taps_param())
       .build<SearchRowsPass>();
 }
@@ -104,7 +104,7 @@ exec::PassType blocker_search_y_pass_type() {
       .sampled("rows", {Format::RGBA32F})
       .image_out("blocker", {Format::R32F})
       .image_out("penumbra", {Format::R16F})
-      .same_size({"position", "normal", "rows", "blocker", "penumbra"})
+      .same_size({"depth", "normal", "rows", "blocker", "penumbra"})
       .param(separable_taps_param())
       .param(fixed_radius_param())
       .build<SearchColumnsPass>();
@@ -116,7 +116,7 @@ exec::PassType blocker_search_poisson_pass_type() {
       .sampled("projected", {Format::RGBA32F})
       .image_out("blocker", {Format::R32F})
       .image_out("penumbra", {Format::R16F})
-      .same_size({"position", "normal", "projected", "blocker", "penumbra"})
+      .same_size({"depth", "normal", "projected", "blocker", "penumbra"})
       .param(poisson_taps_param())
       .param(fixed_radius_param())
       .build<SearchPoissonPass>();

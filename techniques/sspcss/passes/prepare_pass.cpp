@@ -18,7 +18,7 @@ class PreparePass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/sspcss/shaders/prepare.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_position", "position");
+    ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     if (!compare_) compare_.emplace(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp, true);
     if (!raw_) raw_.emplace(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp, false);
@@ -46,7 +46,7 @@ exec::PassType prepare_pass_type() {
              "SSPCSS preparation: hard visibility, projected shadow map (closest blocker's light "
              "distance), view depth, faces-away flag per pixel (compute)")
       .image_out("projected", {Format::RGBA32F})
-      .same_size({"position", "normal", "projected"})
+      .same_size({"depth", "normal", "projected"})
       .real("depth_bias", 0.0002, 0.0, 0.05, "window depth",
             "Constant bias subtracted from the receiver-plane depth in the hard shadow's comparison")
       .boolean("subpixel_hard_shadow", true,

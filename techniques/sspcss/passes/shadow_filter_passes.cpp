@@ -18,8 +18,8 @@ using graph::Format;
 exec::PassDeclBuilder filter_pass(const char* name, const char* description) {
   exec::PassDeclBuilder b(name);
   b.describe(description)
-      .sampled("position", {Format::RGBA32F})
-      .sampled("normal", {Format::RGBA16F, Format::RGBA32F})
+      .sampled("depth", {Format::R32F})
+      .sampled("normal", {Format::RG16})
       .imported("light", false)
       .sampled("projected", {Format::RGBA32F})
       .sampled("penumbra", {Format::R16F});
@@ -29,7 +29,7 @@ exec::PassDeclBuilder filter_pass(const char* name, const char* description) {
 }
 
 void bind_common(const gl::ShaderProgram& p, exec::PassContext& ctx) {
-  ctx.bind_sampled(p, "u_position", "position");
+  ctx.bind_sampled(p, "u_depth", "depth");
   ctx.bind_sampled(p, "u_normal", "normal");
   ctx.bind_sampled(p, "u_projected", "projected");
   ctx.bind_sampled(p, "u_penumbra", "penumbra");
@@ -87,7 +87,7 @@ class FilterPoissonPass final : public exec::PassImpl {
 exec::PassType filter_x_pass_type() {
   return filter_pass("sspcss_filter_x", "SSPCSS cross-bilateral Gaussian of the hard shadow along rows (compute)")
       .image_out("rows", {Format::RGBA32F})
-      .same_size({"position", "normal", "projected", "penumbra", "rows"})
+      .same_size({"depth", "normal", "projected", "penumbra", "rows"})
       .param(separable_taps_param())
       .build<FilterRowsPass>();
 }
@@ -97,7 +97,7 @@ exec::PassType filter_y_pass_type() {
                      "SSPCSS cross-bilateral Gaussian along columns: the shadow mask (compute)")
       .sampled("rows", {Format::RGBA32F})
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "normal", "projected", "penumbra", "rows", "mask"})
+      .same_size({"depth", "normal", "projected", "penumbra", "rows", "mask"})
       .param(separable_taps_param())
       .build<FilterColumnsPass>();
 }
@@ -106,7 +106,7 @@ exec::PassType filter_poisson_pass_type() {
   return filter_pass("sspcss_filter_poisson",
                      "SSPCSS cross-bilateral Poisson filter of the hard shadow: the shadow mask (compute)")
       .image_out("mask", {Format::R16F})
-      .same_size({"position", "normal", "projected", "penumbra", "mask"})
+      .same_size({"depth", "normal", "projected", "penumbra", "mask"})
       .param(poisson_taps_param())
       .build<FilterPoissonPass>();
 }

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Blocker search (section 1), Poisson variant: one pass over a disk of diameter W_search
 // (penumbra_estimate.glsl) around the pixel, u_poisson_taps taps of the projected shadow map
 // (prepare.comp.glsl) with the shadow filter's edge-aware weights (section 2: uniform disk
@@ -19,18 +20,18 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(r32f, binding = 0) uniform writeonly image2D u_blocker;
 layout(r16f, binding = 1) uniform writeonly image2D u_penumbra;
-uniform sampler2D u_position;   // world position, w = linear view depth
-uniform sampler2D u_normal;     // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_projected;  // prepare.comp.glsl
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_blocker)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   float blocker = 0.0, penumbra = 0.0;
   if (pos.w > 0.0) {
     float d_receiver = light_distance(shadow_coord(pos.xyz).z);
-    vec3 normal = texelFetch(u_normal, p, 0).xyz;
+    vec3 normal = gbuffer_normal(u_normal, p);
     mat2 footprint = receiver_footprint(p, pos.xyz, normal);
     float radius = 0.5 * search_width_px(d_receiver, pos.w, footprint);
     RangeCentre centre = range_centre(p, pos.w, normal);

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Blocker search (section 1), separable variant, first pass: along the pixel's row. Reads the
 // projected shadow map (prepare.comp.glsl); taps that are not in hard shadow are no blockers and
 // are ignored (section 1), the others are averaged with the edge-aware weights of the shadow
@@ -18,20 +19,20 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "separable_taps.glsl"
 
 layout(rgba32f, binding = 0) uniform writeonly image2D u_rows;
-uniform sampler2D u_position;   // world position, w = linear view depth
-uniform sampler2D u_normal;     // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_projected;  // prepare.comp.glsl
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_rows)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   if (pos.w <= 0.0) {
     imageStore(u_rows, p, vec4(0.0));
     return;
   }
   float d_receiver = light_distance(shadow_coord(pos.xyz).z);
-  vec3 normal = texelFetch(u_normal, p, 0).xyz;
+  vec3 normal = gbuffer_normal(u_normal, p);
   mat2 footprint = receiver_footprint(p, pos.xyz, normal);
   float width = separable_kernel(footprint, search_width_px(d_receiver, pos.w, footprint)).width_x;
   RangeCentre centre = range_centre(p, pos.w, normal);

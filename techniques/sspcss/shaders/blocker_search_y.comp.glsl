@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Blocker search (section 1), separable variant, second pass: along the pixel's column, over the
 // rows of blocker_search_x.comp.glsl, with the same edge-aware weights; a row counts in
 // proportion to its blocker coverage. Then the penumbra estimate (section 1) from the average
@@ -17,18 +18,18 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(r32f, binding = 0) uniform writeonly image2D u_blocker;
 layout(r16f, binding = 1) uniform writeonly image2D u_penumbra;
-uniform sampler2D u_position;  // world position, w = linear view depth
-uniform sampler2D u_normal;    // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_rows;      // blocker_search_x.comp.glsl
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_blocker)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   float blocker = 0.0, penumbra = 0.0;
   if (pos.w > 0.0) {
     float d_receiver = light_distance(shadow_coord(pos.xyz).z);
-    vec3 normal = texelFetch(u_normal, p, 0).xyz;
+    vec3 normal = gbuffer_normal(u_normal, p);
     mat2 footprint = receiver_footprint(p, pos.xyz, normal);
     SeparableKernel kernel = separable_kernel(footprint, search_width_px(d_receiver, pos.w, footprint));
     float width = kernel.width_y;

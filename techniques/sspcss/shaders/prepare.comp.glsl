@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Preparation (section 1): the hard shadow map in screen space and the projected shadow map, in
 // one texel per pixel so each tap of the later passes is one fetch:
 //   r  hard visibility: 1 lit, 0 in shadow. The mean of four sub-pixel samples (a 2x2 grid on
@@ -19,8 +20,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "screen_geometry.glsl"
 
 layout(rgba32f, binding = 0) uniform writeonly image2D u_projected;
-uniform sampler2D u_position;          // world position, w = linear view depth
-uniform sampler2D u_normal;            // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;        // raw window depth, nearest
 uniform sampler2DShadow u_shadow_cmp;  // the same texture: linear, depth comparison
 uniform float u_depth_bias;            // window depth
@@ -50,16 +51,16 @@ vec2 tangent_plane_offset(vec2 pixel, vec3 n_view, float plane, float depth, Rec
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_projected)))) return;
-  vec4 pos = texelFetch(u_position, p, 0);
+  vec4 pos = gbuffer_position(u_depth, p);
   if (pos.w <= 0.0) {
     imageStore(u_projected, p, vec4(1.0, 0.0, 0.0, 0.0));
     return;
   }
-  vec3 normal = texelFetch(u_normal, p, 0).xyz;
+  vec3 normal = gbuffer_normal(u_normal, p);
   float visibility = 1.0;
   float blocker = 0.0;  // light distance of the blockers, where visibility < 1
   Receiver r;
-  if (shadow_receiver(u_position, u_normal, p, r)) {
+  if (shadow_receiver(u_depth, u_normal, p, r)) {
     vec3 n_view = normalize(mat3(u_view) * normal);
     vec3 centre_ray = view_ray(vec2(p));
     float plane = pos.w * dot(n_view, centre_ray);

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Shadow filtering (section 1), Poisson variant: the hard visibility of the projected shadow map
 // (prepare.comp.glsl) averaged over a disk of diameter W_screen (this pixel's penumbra_width)
 // with the cross-bilateral weights of section 2 (uniform disk domain x range term), giving the
@@ -13,8 +14,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "poisson_taps.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;   // world position, w = linear view depth
-uniform sampler2D u_normal;     // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_projected;  // prepare.comp.glsl: r = hard visibility, b = view depth, a = faces away
 uniform sampler2D u_penumbra;   // W_screen, pixels
 
@@ -29,8 +30,8 @@ void main() {
   } else if (own.a > 0.5) {
     visibility = 0.0;
   } else if (width > 0.0) {
-    vec3 normal = texelFetch(u_normal, p, 0).xyz;
-    mat2 footprint = receiver_footprint(p, texelFetch(u_position, p, 0).xyz, normal);
+    vec3 normal = gbuffer_normal(u_normal, p);
+    mat2 footprint = receiver_footprint(p, gbuffer_position(u_depth, p).xyz, normal);
     RangeCentre centre = range_centre(p, own.b, normal);
     vec2 rotation = poisson_rotation(p);
     float weight = 1.0, sum = own.r;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Shadow filtering (section 1), separable variant, first pass: the hard visibility of the
 // projected shadow map (prepare.comp.glsl) filtered along the pixel's row by the cross-bilateral
 // Gaussian (section 2) of diameter W_screen, this pixel's (blocker_search_*: penumbra_width).
@@ -17,8 +18,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "separable_taps.glsl"
 
 layout(rgba32f, binding = 0) uniform writeonly image2D u_rows;
-uniform sampler2D u_position;   // world position, w = linear view depth
-uniform sampler2D u_normal;     // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_projected;  // prepare.comp.glsl: r = hard visibility, b = view depth
 uniform sampler2D u_penumbra;   // W_screen, pixels
 
@@ -29,8 +30,8 @@ void main() {
   float width = texelFetch(u_penumbra, p, 0).r;
   float visibility = own.r, kept = 1.0;
   if (own.b > 0.0 && width > 0.0) {
-    vec3 normal = texelFetch(u_normal, p, 0).xyz;
-    mat2 footprint = receiver_footprint(p, texelFetch(u_position, p, 0).xyz, normal);
+    vec3 normal = gbuffer_normal(u_normal, p);
+    mat2 footprint = receiver_footprint(p, gbuffer_position(u_depth, p).xyz, normal);
     RangeCentre centre = range_centre(p, own.b, normal);
     width = separable_kernel(footprint, width).width_x;
     AxisTaps taps = axis_taps(width, interleaved_gradient_noise(vec2(p) + vec2(7.0, 89.0)));

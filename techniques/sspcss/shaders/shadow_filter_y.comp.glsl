@@ -1,4 +1,5 @@
 #version 450 core
+#include "gbuffer/gbuffer_read.glsl"
 // Shadow filtering (section 1), separable variant, second pass: the rows of
 // shadow_filter_x.comp.glsl filtered along the pixel's column by the same cross-bilateral
 // Gaussian of diameter W_screen (this pixel's), giving the shadow mask (1 = lit, 0 = umbra). A
@@ -14,8 +15,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "separable_taps.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
-uniform sampler2D u_position;   // world position, w = linear view depth
-uniform sampler2D u_normal;     // world-space unit normal
+uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
+uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_projected;  // prepare.comp.glsl: r = hard visibility, b = view depth, a = faces away
 uniform sampler2D u_penumbra;   // W_screen, pixels
 uniform sampler2D u_rows;       // shadow_filter_x.comp.glsl: r = visibility, g = kept share, b = view depth
@@ -31,8 +32,8 @@ void main() {
   } else if (own.a > 0.5) {
     visibility = 0.0;
   } else if (width > 0.0) {
-    vec3 normal = texelFetch(u_normal, p, 0).xyz;
-    mat2 footprint = receiver_footprint(p, texelFetch(u_position, p, 0).xyz, normal);
+    vec3 normal = gbuffer_normal(u_normal, p);
+    mat2 footprint = receiver_footprint(p, gbuffer_position(u_depth, p).xyz, normal);
     RangeCentre centre = range_centre(p, own.b, normal);
     SeparableKernel kernel = separable_kernel(footprint, width);
     width = kernel.width_y;
