@@ -93,6 +93,7 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
     } catch (const std::exception& ex) {
       s = make_error(ex.what(), ErrorKind::internal);
     }
+    if (s && ctx.binding_error()) s = *ctx.binding_error();
     glPopDebugGroup();
     timer_.end_pass(i);
     // Leave no state behind that the next pass would inherit by accident.

@@ -83,9 +83,35 @@ void PassContext::bind_sampled(const gl::ShaderProgram& p, const char* uniform, 
 void PassContext::bind_image(GLuint unit, std::string_view slot, GLenum access, int level) const {
   const gl::Texture& t = texture(slot);
   glBindImageTexture(unit, t.id(), level, GL_FALSE, 0, access, t.info().internal_format);
+  std::erase_if(images_, [&](const BoundImage& b) { return b.unit == unit; });
+  images_.push_back({unit, std::string(slot), t.format()});
+}
+
+bool PassContext::images_match(const gl::ShaderProgram& p) const {
+  for (const BoundImage& bound : images_) {
+    const std::string want = graph::image_format_qualifier(bound.format);
+    std::string declared;
+    bool any = false, match = false;
+    for (const gl::ImageDeclaration& d : p.program().images())
+      if (d.binding == bound.unit) {
+        any = true;
+        match = match || d.qualifier == want;
+        declared += (declared.empty() ? "" : " or ") + d.qualifier + " (" + d.name + ")";
+      }
+    if (any && !match) {
+      const graph::PlannedBinding* b = find(bound.slot);
+      binding_error_ = make_error("image unit " + std::to_string(bound.unit) + " is declared " + declared +
+                                  " in the shader, but slot '" + bound.slot + "' holds '" +
+                                  (b ? b->resource : std::string("?")) + "', a " + graph::format_name(bound.format) +
+                                  " texture (qualifier " + want + ")");
+      return false;
+    }
+  }
+  return true;
 }
 
 void PassContext::dispatch_over(const gl::ShaderProgram& p, int width, int height) const {
+  if (!images_match(p)) return;
   glm::ivec3 local = p.program().local_size();
   GLuint gx = static_cast<GLuint>((width + local.x - 1) / std::max(local.x, 1));
   GLuint gy = static_cast<GLuint>((height + local.y - 1) / std::max(local.y, 1));
@@ -94,6 +120,7 @@ void PassContext::dispatch_over(const gl::ShaderProgram& p, int width, int heigh
 }
 
 void PassContext::dispatch_tiles(const gl::ShaderProgram& p, int width, int height, int tile) const {
+  if (!images_match(p)) return;
   tile = std::max(tile, 1);
   glUseProgram(p.id());
   glDispatchCompute(static_cast<GLuint>((width + tile - 1) / tile), static_cast<GLuint>((height + tile - 1) / tile), 1);

@@ -79,6 +79,10 @@ class PassContext {
   // workgroup is larger than the block it writes (it also computes a halo around it).
   void dispatch_tiles(const gl::ShaderProgram& p, int width, int height, int tile) const;
 
+  // Set when a dispatch was refused: an image bound to a unit whose declared format qualifier
+  // differs from the texture's format (the executor reports it as the pass's error).
+  const std::optional<Error>& binding_error() const { return binding_error_; }
+
   // A progressive pass's progress (exec/pass_progress.h); the executor keeps the last report.
   void report_progress(PassProgress progress) const {
     if (progress_) *progress_ = std::move(progress);
@@ -87,6 +91,9 @@ class PassContext {
  private:
   const graph::PlannedBinding* find(std::string_view slot) const;
   const graph::ParamValue& value(std::string_view name) const;
+  // False (and binding_error() set) when an image bound for this dispatch has another format
+  // than `p` declares for its unit.
+  bool images_match(const gl::ShaderProgram& p) const;
 
   const graph::PlannedPass& pass_;
   const graph::ParameterSet& params_;
@@ -96,6 +103,13 @@ class PassContext {
   std::function<gl::Buffer*(int)> buffers_;
   std::optional<PassProgress>* progress_;
   GLuint next_unit_ = 0;
+  struct BoundImage {
+    GLuint unit;
+    std::string slot;
+    graph::Format format;
+  };
+  mutable std::vector<BoundImage> images_;
+  mutable std::optional<Error> binding_error_;
 };
 
 class PassImpl {

@@ -85,6 +85,7 @@ Result<Program> build_program(const ShaderSources& sources, const ShaderFileSyst
     stages.emplace_back(GL_FRAGMENT_SHADER, sources.fragment);
   }
   std::vector<GLuint> compiled;
+  std::vector<ImageDeclaration> images;
   for (const auto& [stage, path] : stages) {
     auto pre = preprocess_shader(path, files, sources.defines);
     if (!pre) {
@@ -98,14 +99,19 @@ Result<Program> build_program(const ShaderSources& sources, const ShaderFileSyst
       return s.error();
     }
     compiled.push_back(*s);
+    if (stage == GL_COMPUTE_SHADER) images = image_declarations(pre->text);
   }
-  return link(compiled, stages.front().second);
+  auto program = link(compiled, stages.front().second);
+  if (program) program->set_images(std::move(images));
+  return program;
 }
 
 Result<Program> build_compute_from_text(const std::string& text) {
   auto s = compile_stage(GL_COMPUTE_SHADER, text, {"<inline>"});
   if (!s) return s.error();
-  return link({*s}, "<inline>");
+  auto program = link({*s}, "<inline>");
+  if (program) program->set_images(image_declarations(text));
+  return program;
 }
 
 Status ShaderProgram::build() {

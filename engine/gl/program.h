@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/gl_handle.h"
+#include "gl/image_declarations.h"
 #include "gl/shader_files.h"
 #include "util/error.h"
 
@@ -41,9 +42,13 @@ class Program {
   }
   // Work-group size declared by a compute shader's layout(local_size_*).
   glm::ivec3 local_size() const;
+  // The compute shader's image uniforms with a binding and format (gl/image_declarations.h).
+  const std::vector<ImageDeclaration>& images() const { return images_; }
+  void set_images(std::vector<ImageDeclaration> images) { images_ = std::move(images); }
 
  private:
   GlHandle<delete_program> handle_;
+  std::vector<ImageDeclaration> images_;
 };
 
 struct ShaderSources {

@@ -2,9 +2,9 @@
 #include "gbuffer/gbuffer_read.glsl"
 // Hard shadow: one depth comparison per pixel at the nearest shadow-map texel; the mask is
 // exactly 0 or 1.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
-layout(r16f, binding = 0) uniform writeonly image2D u_mask;
+layout(MASK_QUALIFIER, binding = 0) uniform writeonly image2D u_mask;  // the mask texture's format (a define)
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;   // raw depth, nearest

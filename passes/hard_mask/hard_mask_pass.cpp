@@ -13,7 +13,10 @@ using graph::Format;
 class HardMaskPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    gl::ShaderProgram& p = ctx.program({.compute = "passes/hard_mask/hard_mask.comp.glsl"});
+    // The mask is exactly 0 or 1: R8 holds it as well as R16F, in half the bytes.
+    gl::ShaderProgram& p = ctx.program(
+        {.compute = "passes/hard_mask/hard_mask.comp.glsl",
+         .defines = {{"MASK_QUALIFIER", graph::image_format_qualifier(ctx.texture("mask").format())}}});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
@@ -31,7 +34,7 @@ class HardMaskPass final : public exec::PassImpl {
 
 exec::PassType hard_mask_pass_type() {
   return shadow_receiver_pass("hard_mask", "Binary shadow mask: one nearest shadow-map comparison per pixel (compute)")
-      .image_out("mask", {Format::R16F})
+      .image_out("mask", {Format::R8, Format::R16F})
       .same_size({"depth", "normal", "mask"})
       .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
             "Subtracted from the receiver depth before the comparison")

@@ -2,7 +2,7 @@
 #include "gbuffer/gbuffer_read.glsl"
 // Lambert + ambient with base colour, shadowed by the technique's shadow_mask, then tone
 // mapped (Reinhard on luminance-free RGB) and encoded with gamma 2.2 into RGBA8.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(rgba8, binding = 0) uniform writeonly image2D u_color;
 uniform sampler2D u_albedo;
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral

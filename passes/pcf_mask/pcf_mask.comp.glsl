@@ -6,7 +6,7 @@
 //                    phi = 2 pi IGN(pixel) (Sterna 2018, section 1) so banding becomes noise.
 // Each tap is a bilinear hardware comparison against the receiver plane (Isidoro
 // 2006) minus a small constant bias.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "shadow_taps.glsl"

@@ -13,7 +13,7 @@
 // (fully lit, background, or outside the shadow map). Taps: `samples` Vogel-disk positions
 // rotated per pixel by 2 pi IGN(pixel), each a textureGather of 4 raw depths (so 4 x samples
 // texels), each compared against the receiver plane (Isidoro 2006) minus a constant bias.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "pcf_mask/shadow_taps.glsl"

@@ -10,7 +10,7 @@
 // Step 3, filtering: PCF over a Vogel disk of diameter w_penumbra, `samples` taps rotated per
 // pixel by 2 pi IGN(pixel), each a bilinear hardware comparison against the receiver plane.
 // Pixels where the blocker search found nothing are exactly 1 (lit).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "pcf_mask/shadow_taps.glsl"

@@ -4,7 +4,7 @@
 // t = clamp((v - min) / (max - min), 0, 1), then to grey (t, t, t) or a heat ramp
 // (blue, cyan, green, yellow, red at t = 0, .25, .5, .75, 1). The input is read nearest at the
 // output pixel's relative position, so sizes may differ (e.g. a shadow map shown on screen).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(rgba8, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_input;
 uniform float u_min;

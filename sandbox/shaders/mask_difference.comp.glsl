@@ -2,7 +2,7 @@
 // Error image of compare mode: |a - b| of two shadow masks (visibility, 1 = lit) per pixel, and
 // receiver coverage (gbuffer_depth > 0 on geometry, see technique/frame_graph.h) so the display
 // greys out the background as the CLI's heat maps do. r = |a - b|, g = coverage (0 or 1).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(binding = 0, rg16f) uniform writeonly image2D difference;
 uniform sampler2D mask_a;
 uniform sampler2D mask_b;

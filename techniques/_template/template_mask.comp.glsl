@@ -3,7 +3,7 @@
 // template_mask: one thread per screen pixel. Rebuilds the G-buffer position, projects it into
 // the shadow map (shadow_common.glsl, found in passes/common) and writes the shadow mask
 // (1 = lit). Replace the body with your technique.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;

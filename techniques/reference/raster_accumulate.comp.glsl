@@ -13,7 +13,7 @@
 // ray): the depth a receiver-plane slope gains over the distance between the receiver and the
 // nearest texel centre (receiver-plane depth bias, Isidoro 2006, in world units). Flat-facing
 // receivers get almost none, grazing ones up to 10 texels.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(r32f, binding = 0) uniform image2D u_accumulation;  // sum of visibilities so far
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral

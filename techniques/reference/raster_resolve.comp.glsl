@@ -2,7 +2,7 @@
 #include "gbuffer/gbuffer_read.glsl"
 // Raster reference: shadow_mask = accumulated visibility / samples accumulated (1 = lit).
 // Background pixels are written 1 (lit), as the ray-traced reference does.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(r32f, binding = 0) uniform readonly image2D u_accumulation;
 layout(r32f, binding = 1) uniform writeonly image2D u_mask;
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background

@@ -50,9 +50,9 @@ TEST(BenchCommand, ReportsTrafficBandwidthAndTheMeasuredPeaks) {
   const nlohmann::json* mask = pass_named(row, "hard_mask");
   ASSERT_NE(mask, nullptr) << row.dump();
   // The frame contract's R32F view depth + RG16 normal per pixel and the DEPTH32F shadow map, once
-  // each; an R16F mask.
+  // each; an R8 mask.
   EXPECT_EQ((*mask)["read_bytes"].get<std::uint64_t>(), std::uint64_t{kWidth} * kHeight * 8 + kShadow * kShadow * 4);
-  EXPECT_EQ((*mask)["written_bytes"].get<std::uint64_t>(), std::uint64_t{kWidth} * kHeight * 2);
+  EXPECT_EQ((*mask)["written_bytes"].get<std::uint64_t>(), std::uint64_t{kWidth} * kHeight * 1);
   EXPECT_FALSE((*mask)["frame"].get<bool>());
   const double ms = (*mask)["ms"].get<double>();
   ASSERT_GT(ms, 0.0);
@@ -92,8 +92,8 @@ TEST(GraphCommand, TrafficTablePrintsTheBytesOfEveryPass) {
                          "/techniques/baseline/hard.json --traffic --screen 3840x2160 --shadow 2048");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   // hard_mask at 4K: 3840*2160*8 B (view depth + normal) + 2048^2*4 B read = 83.13 MB;
-  // 3840*2160*2 B written = 16.59 MB; (83.13 + 16.59) MB / 8294400 px = 12.02 B/px.
-  EXPECT_NE(r.output.find("hard_mask                hard_mask                   83.13      16.59    12.02"),
+  // 3840*2160*1 B (R8 mask) written = 8.29 MB; (83.13 + 8.29) MB / 8294400 px = 11.02 B/px.
+  EXPECT_NE(r.output.find("hard_mask                hard_mask                   83.13       8.29    11.02"),
             std::string::npos) << r.output;
   EXPECT_NE(r.output.find("technique passes"), std::string::npos) << r.output;
 }

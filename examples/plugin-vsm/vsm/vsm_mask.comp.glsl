@@ -4,7 +4,7 @@
 // (mean m1, mean of squares m2) at its shadow-map texel: lit when t <= m1, else the Chebyshev
 // bound s^2 / (s^2 + (t - m1)^2), s^2 = max(m2 - m1^2, min_variance), with light-bleeding
 // reduction (Lauritzen, GPU Gems 3 ch. 8): visibility below u_bleeding is 0, the rest rescaled.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;

@@ -1,7 +1,7 @@
 #version 450 core
 // vsm_moments: one thread per shadow-map texel. The mean of the light distance d (world units,
 // shadow_common.glsl's light_distance) and of d^2 over a (2r+1)^2 box of the shadow map.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 
 layout(rg32f, binding = 0) uniform writeonly image2D u_moments;

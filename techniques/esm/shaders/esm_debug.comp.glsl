@@ -2,7 +2,7 @@
 // Debug views of the extended shadow map for the viewer: the edge-distance channel decoded to a
 // signed distance from the silhouette edge in texels (> 0 outside the occluder, between -0.35
 // (the guard zone) and 2.83; 0 where no quad wrote), and the silhouette mask (1 where one did).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "esm_common.glsl"
 layout(r32f, binding = 0) uniform writeonly image2D u_edge_distance;
 layout(r16f, binding = 1) uniform writeonly image2D u_silhouette_mask;

@@ -20,7 +20,7 @@
 // The paper shifts the boundary 0.707 texels outwards so that its 8-bit lookup could always
 // trust a; with the rule above the true edge is kept (boundary_shift = 0), the paper's shift is
 // a parameter.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "esm_common.glsl"
 #include "esm_views.glsl"

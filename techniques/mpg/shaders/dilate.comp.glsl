@@ -15,7 +15,7 @@
 // the round unit kernel mapped by the pixel's kernel shape A (kernel_shape.glsl), so D reaches
 // along the receiver's penumbra footprint; taps are the nearest texels (a bilinear D would mix
 // in the zeros of lit texels).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "mpg_common.glsl"
 #include "shape_offset.glsl"
 

@@ -35,7 +35,7 @@
 // Written per pixel (layout in mpg_common.glsl): background (0, 0, 0, 0); lit or outside the
 // shadow map (0, 0, z, 0); receiver facing away from the light (1, 0, z, 0): its own umbra,
 // never filtered (the reference counts such receivers as fully shadowed); shadowed (S, D, z, 0).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "mpg_common.glsl"
 #include "kernel_shape.glsl"

@@ -7,7 +7,7 @@
 //   shadowed, D = 0  dark grey (contact, the receiver's own umbra, or frozen by the early-out)
 //   background   black
 // It reads the distance map as pass 4 receives it (after the early-out and the dilation).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 
 layout(rgba8, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_distance_map;  // texelFetch

@@ -7,7 +7,7 @@
 // kernel shape A (kernel_shape.glsl): the passes run along A's two columns, which keeps the 2-D
 // kernel separable (g(u) g(v) at offset u A e_x + v A e_y); taps are read bilinearly. Both use
 // the centre pixel's D, which the x pass copies through.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "mpg_common.glsl"
 #include "shape_offset.glsl"
 

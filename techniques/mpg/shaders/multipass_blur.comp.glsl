@@ -14,7 +14,7 @@
 // D > 0): the penumbra then follows a continuous D instead of stepping at whole passes.
 // Lit pixels have D = 0 unless dilated (pass 3), so without dilation they stay exactly S = 0:
 // the passes only lighten shadowed pixels, growing the inner penumbra (section 5).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "mpg_common.glsl"
 #include "shape_offset.glsl"
 

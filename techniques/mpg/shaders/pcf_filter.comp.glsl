@@ -6,7 +6,7 @@
 // unit kernel and mapped to the screen by the pixel's kernel shape A (kernel_shape.glsl; identity
 // when `anisotropic` is off), so taps fall between texels and are read bilinearly. Reads the
 // distance map as it was after passes 2-3, writes the filtered S to the next version.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "mpg_common.glsl"
 #include "shape_offset.glsl"
 

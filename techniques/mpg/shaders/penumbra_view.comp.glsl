@@ -7,7 +7,7 @@
 //   penumbra                 dark blue gradient, darkest at the umbra side
 //   umbra (mask <= 0.01)     mid grey with diagonal hatching
 //   background               black
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 
 layout(rgba8, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_mask;      // visibility, 1 = lit

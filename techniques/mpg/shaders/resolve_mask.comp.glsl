@@ -1,7 +1,7 @@
 #version 450 core
 // Pass 5 (Cherry & Kooima, section 3.2): the frame's shadow_mask from the filtered distance map,
 // visibility = 1 - S (S = 0 lit, 1 umbra, between: penumbra). Background pixels have S = 0.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_distance_map;  // texelFetch

@@ -11,7 +11,7 @@
 // lit neighbours); a pixel marked here is never blurred, so the inner penumbra cannot reach past
 // (N - 1) / 2 pixels from the hard shadow edge. N must be at least max_kernel (checked by the
 // pass), and larger to leave the multi-pass room to grow.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 
 layout(rgba16f, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_distance_map;  // texelFetch

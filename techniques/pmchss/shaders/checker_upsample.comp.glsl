@@ -5,7 +5,7 @@
 // other pixel is the average of its four computed neighbours weighted by
 // 1 / (eps + |linear depth difference|), so neighbours on other surfaces barely contribute
 // ("only blend in those neighbours whose depths don't differ much").
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_checker;   // RG16F screen/2, nearest
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background

@@ -1,7 +1,7 @@
 #version 450 core
 // Min-filter variant, first step (Sterna 2018, section 2.3): the minimum (closest to the light)
 // window depth of each FACTOR x FACTOR block of the shadow map.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(r32f, binding = 0) uniform writeonly image2D u_min_depth;
 uniform sampler2D u_shadow_map;  // raw window depth
 

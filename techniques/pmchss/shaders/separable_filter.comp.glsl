@@ -6,7 +6,7 @@
 //   MODE 2 min:      the min filter of the min-filter variant (section 2.3)
 //   MODE 3 copy:     radius 0 (keeps a graph edge when a stage is switched off)
 // Taps outside the texture are clamped to the edge.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(IMAGE_FORMAT, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_input;
 uniform ivec2 u_axis;    // (1, 0) horizontal, (0, 1) vertical

@@ -10,7 +10,7 @@
 // packed target is RG16F at screen/2: texel (cx, cy) holds pixel (2cx, 2cy) in .r and
 // (2cx + 1, 2cy + 1) in .g, i.e. the same texel count x channels as the paper's half-width
 // R target (the graph's size expressions have no half-width form).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "common/receiver_plane.glsl"

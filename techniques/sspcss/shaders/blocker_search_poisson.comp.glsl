@@ -9,7 +9,7 @@
 //   penumbra W_screen, the shadow filter's diameter in pixels (0 = no blocker), clamped to
 //            max_penumbra_px
 // The centre pixel is always a tap (the disk set need not hold the centre).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"

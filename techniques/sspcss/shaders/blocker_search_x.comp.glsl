@@ -9,7 +9,7 @@
 //   r  mean light distance of the row's blockers (world units; 0 where none)
 //   g  blocker coverage: their weight / the weight of every tap (in [0, 1])
 //   b  the pixel's view depth (world units; 0 = background), for the next pass's range term
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"

@@ -7,7 +7,7 @@
 //   blocker  average blocker light distance, world units (0 = no blocker found)
 //   penumbra W_screen, the shadow filter's diameter in pixels (0 = no blocker: the pixel keeps
 //            its hard visibility), clamped to max_penumbra_px
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"

@@ -14,7 +14,7 @@
 //   a  1 where the receiver faces away from the light (in its own shadow, mask 0), else 0
 // Background pixels and pixels outside the light frustum are lit. No NDC depth leaves this pass:
 // the shadow map's window depth is turned into a light distance here.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "pcf_mask/shadow_taps.glsl"
 #include "screen_geometry.glsl"

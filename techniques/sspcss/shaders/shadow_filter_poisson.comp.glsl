@@ -5,7 +5,7 @@
 // with the cross-bilateral weights of section 2 (uniform disk domain x range term), giving the
 // shadow mask (1 = lit, 0 = umbra). The centre pixel is always a tap. Background: 1. A receiver
 // facing away from the light: 0 (its own shadow). W_screen = 0: the hard visibility.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"

@@ -9,7 +9,7 @@
 //   g  the share of the row kernel's weight left by the range term (in [0, 1]): a row that
 //      crosses a depth edge counts less in the column pass, as its taps would in a 2D filter
 //   b  the pixel's view depth (world units; 0 = background), the next pass's range term input
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"

@@ -6,7 +6,7 @@
 // row counts in proportion to the share of its kernel the range term kept.
 // Background: 1. A receiver facing away from the light: 0 (its own shadow). W_screen = 0: the
 // hard visibility.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
 #include "screen_geometry.glsl"

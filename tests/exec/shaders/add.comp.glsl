@@ -1,6 +1,6 @@
 #version 450 core
 // Compute test pass: dst = src + amount (src sampled, dst written as an image).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 uniform sampler2D u_src;
 layout(r32f, binding = 0) uniform writeonly image2D u_dst;
 uniform float u_amount;

@@ -1,6 +1,6 @@
 #version 450 core
 // In-place compute test pass: img *= factor (image load/store on one texture).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(r32f, binding = 0) uniform image2D u_img;
 uniform float u_factor;
 void main() {

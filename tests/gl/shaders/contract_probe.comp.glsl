@@ -2,7 +2,7 @@
 // Writes the frame contract as a pass reads it: the rebuilt world position (w = view depth) and
 // the decoded normal, and a lit shadow_mask.
 #include "gbuffer/gbuffer_read.glsl"
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(rgba32f, binding = 0) uniform writeonly image2D u_position_out;
 layout(rgba32f, binding = 1) uniform writeonly image2D u_normal_out;
 layout(r16f, binding = 2) uniform writeonly image2D u_mask;

@@ -1,7 +1,7 @@
 #version 450 core
 // Test pattern for the sandbox tests: `level` inside stripes (or checker cells) of
 // `stripe_width` pixels on geometry, 1 (lit) elsewhere.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(binding = 0, r16f) uniform writeonly image2D mask;
 uniform sampler2D depth;  // gbuffer_depth: 0 on background
 uniform float level;

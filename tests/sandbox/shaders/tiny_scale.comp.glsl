@@ -1,6 +1,6 @@
 #version 450 core
 // output = input * factor (the sandbox tests' second, optional pass).
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "screen_pass.glsl"
 layout(binding = 0, r16f) uniform writeonly image2D dst;
 uniform sampler2D src;
 uniform float factor;
