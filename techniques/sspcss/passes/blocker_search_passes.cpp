@@ -91,8 +91,8 @@ class SearchPoissonPass final : public exec::PassImpl {
 exec::PassType blocker_search_x_pass_type() {
   return search_pass("sspcss_blocker_search_x",
                      "SSPCSS blocker search along rows: mean blocker distance and coverage per row (compute)")
-      .sampled("projected", {Format::RGBA32F})
-      .image_out("rows", {Format::RGBA32F})
+      .sampled("projected", {Format::RGBA16F})
+      .image_out("rows", {Format::RGBA16F})
       .same_size({"depth", "normal", "projected", "rows"})
       .param(separable_taps_param())
       .build<SearchRowsPass>();
@@ -101,7 +101,7 @@ exec::PassType blocker_search_x_pass_type() {
 exec::PassType blocker_search_y_pass_type() {
   return search_pass("sspcss_blocker_search_y",
                      "SSPCSS blocker search along columns, then the penumbra estimate W_screen (compute)")
-      .sampled("rows", {Format::RGBA32F})
+      .sampled("rows", {Format::RGBA16F})
       .image_out("blocker", {Format::R32F})
       .image_out("penumbra", {Format::R16F})
       .same_size({"depth", "normal", "rows", "blocker", "penumbra"})
@@ -113,7 +113,7 @@ exec::PassType blocker_search_y_pass_type() {
 exec::PassType blocker_search_poisson_pass_type() {
   return search_pass("sspcss_blocker_search_poisson",
                      "SSPCSS blocker search over a Poisson disk, then the penumbra estimate W_screen (compute)")
-      .sampled("projected", {Format::RGBA32F})
+      .sampled("projected", {Format::RGBA16F})
       .image_out("blocker", {Format::R32F})
       .image_out("penumbra", {Format::R16F})
       .same_size({"depth", "normal", "projected", "blocker", "penumbra"})

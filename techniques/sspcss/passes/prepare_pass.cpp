@@ -45,7 +45,7 @@ exec::PassType prepare_pass_type() {
              "sspcss_prepare",
              "SSPCSS preparation: hard visibility, projected shadow map (closest blocker's light "
              "distance), view depth, faces-away flag per pixel (compute)")
-      .image_out("projected", {Format::RGBA32F})
+      .image_out("projected", {Format::RGBA16F})
       .same_size({"depth", "normal", "projected"})
       .real("depth_bias", 0.0002, 0.0, 0.05, "window depth",
             "Constant bias subtracted from the receiver-plane depth in the hard shadow's comparison")

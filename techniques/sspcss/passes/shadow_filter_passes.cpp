@@ -21,7 +21,7 @@ exec::PassDeclBuilder filter_pass(const char* name, const char* description) {
       .sampled("depth", {Format::R32F})
       .sampled("normal", {Format::RG16})
       .imported("light", false)
-      .sampled("projected", {Format::RGBA32F})
+      .sampled("projected", {Format::RGBA16F})
       .sampled("penumbra", {Format::R16F});
   for (graph::ParamDesc& d : range_params()) b.param(std::move(d));
   b.param(footprint_param());
@@ -86,7 +86,7 @@ class FilterPoissonPass final : public exec::PassImpl {
 
 exec::PassType filter_x_pass_type() {
   return filter_pass("sspcss_filter_x", "SSPCSS cross-bilateral Gaussian of the hard shadow along rows (compute)")
-      .image_out("rows", {Format::RGBA32F})
+      .image_out("rows", {Format::RGBA16F})
       .same_size({"depth", "normal", "projected", "penumbra", "rows"})
       .param(separable_taps_param())
       .build<FilterRowsPass>();
@@ -95,7 +95,7 @@ exec::PassType filter_x_pass_type() {
 exec::PassType filter_y_pass_type() {
   return filter_pass("sspcss_filter_y",
                      "SSPCSS cross-bilateral Gaussian along columns: the shadow mask (compute)")
-      .sampled("rows", {Format::RGBA32F})
+      .sampled("rows", {Format::RGBA16F})
       .image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "projected", "penumbra", "rows", "mask"})
       .param(separable_taps_param())

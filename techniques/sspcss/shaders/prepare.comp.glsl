@@ -19,7 +19,7 @@
 #include "pcf_mask/shadow_taps.glsl"
 #include "screen_geometry.glsl"
 
-layout(rgba32f, binding = 0) uniform writeonly image2D u_projected;
+layout(rgba16f, binding = 0) uniform writeonly image2D u_projected;
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;        // raw window depth, nearest

@@ -17,7 +17,7 @@
 #include "receiver_footprint.glsl"
 #include "separable_taps.glsl"
 
-layout(rgba32f, binding = 0) uniform writeonly image2D u_rows;
+layout(rgba16f, binding = 0) uniform writeonly image2D u_rows;
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_projected;  // prepare.comp.glsl: r = hard visibility, b = view depth
