@@ -6,7 +6,9 @@
 #   scripts/report/compare-quality.sh BEFORE_PENUMBRA AFTER_PENUMBRA OUT_DIR
 # SIZE (default 480x270), RAYS (default 64), SCENES, TECHNIQUES and CONTEXT (default osmesa)
 # override the defaults. Both builds share one reference cache (PENUMBRA_CACHE_DIR in OUT_DIR),
-# so they are compared with the same ground truth.
+# so they are compared with the same ground truth. A binary reads technique graphs and shaders
+# from its own source tree when that tree exists: build "before" in a separate worktree
+# (git worktree add ../before COMMIT), not from a checkout that has moved on.
 set -euo pipefail
 before="${1:?usage: compare-quality.sh BEFORE_PENUMBRA AFTER_PENUMBRA OUT_DIR}"
 after="${2:?usage: compare-quality.sh BEFORE_PENUMBRA AFTER_PENUMBRA OUT_DIR}"
