@@ -38,16 +38,6 @@ metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_depth) {
   return coverage;
 }
 
-std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_depth, const scene::Camera& camera) {
-  const int w = gbuffer_depth.width(), h = gbuffer_depth.height();
-  const std::vector<glm::vec4> bottom_up = exec::read_positions(gbuffer_depth, camera);
-  std::vector<glm::vec4> out(bottom_up.size());
-  for (int y = 0; y < h; ++y)
-    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(y) * w, w,
-                out.begin() + static_cast<std::ptrdiff_t>(h - 1 - y) * w);
-  return out;
-}
-
 Status render_timed_frames(technique::TechniqueSession& session, int warmup, int frames) {
   for (int i = 0; i < warmup + frames; ++i)
     if (Status s = session.render(); !s) return s;

@@ -17,10 +17,6 @@ namespace penumbra::measurement {
 metrics::MaskImage read_mask_image(const gl::Texture& texture);
 // Receiver pixels: gbuffer_depth > 0 (the frame contract), rows top to bottom.
 metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_depth);
-// World positions rebuilt from gbuffer_depth and the camera it was rendered with (w = view
-// depth, > 0 on receivers), rows top to bottom.
-std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_depth, const scene::Camera& camera);
-
 // Renders `warmup` frames, then `frames` measured frames (plus the timer's read-back latency
 // when timings come from GPU timestamp queries, so the measured frames are the last ones read).
 Status render_timed_frames(technique::TechniqueSession& session, int warmup, int frames);

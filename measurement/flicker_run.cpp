@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "exec/gbuffer_readback.h"
 #include "measurement/eval_capture.h"
 #include "technique/frame_graph.h"
 
@@ -61,7 +62,7 @@ Result<metrics::SurfaceFrame> read_frame(technique::TechniqueSession& session, c
   gl::Texture* mask = session.executor().resource(technique::kShadowMask);
   gl::Texture* depth = session.executor().resource("gbuffer_depth");
   if (!mask || !depth) return make_error("the frame lacks shadow_mask or gbuffer_depth", ErrorKind::internal);
-  return metrics::SurfaceFrame{read_mask_image(*mask), read_positions(*depth, session.camera()), motion.view_proj()};
+  return metrics::SurfaceFrame{read_mask_image(*mask), exec::read_positions(*depth, session.camera(), exec::RowOrder::top_down), motion.view_proj()};
 }
 
 }  // namespace
@@ -87,7 +88,7 @@ Result<std::vector<metrics::SurfaceFrame>> reference_motion_frames(technique::Te
     if (Status s = session.render(); !s) return s.error();
     gl::Texture* depth = session.executor().resource("gbuffer_depth");
     if (!depth) return make_error("the reference frame lacks gbuffer_depth", ErrorKind::internal);
-    frames.push_back({std::move(ref->mask), read_positions(*depth, session.camera()), motion.view_proj()});
+    frames.push_back({std::move(ref->mask), exec::read_positions(*depth, session.camera(), exec::RowOrder::top_down), motion.view_proj()});
   }
   return frames;
 }

@@ -66,9 +66,8 @@ void draw_blocker_region(SandboxController& c, ImDrawList* dl, float x0, float y
   glGetTextureSubImage(depth->id(), 0, t->x, t->y, 0, 1, 1, 1, GL_RED, GL_FLOAT, sizeof view_depth, &view_depth);
   if (!(view_depth > 0.0f)) return;
   const float aspect = static_cast<float>(c.width()) / static_cast<float>(c.height());
-  const glm::vec3 receiver = exec::world_from_view_depth(glm::inverse(c.camera().view()),
-                                                         glm::inverse(c.camera().projection(aspect)), t->x, t->y,
-                                                         c.width(), c.height(), view_depth);
+  const exec::PixelRays rays = exec::pixel_rays(c.camera().view(), c.camera().projection(aspect), c.width(), c.height());
+  const glm::vec3 receiver = exec::world_from_view_depth(rays, t->x, t->y, view_depth);
   const scene::Light& light = c.light();
   std::vector<Segment> cone;
   for (const glm::vec3& e : emitter_outline(light, 12)) cone.push_back({receiver, e});

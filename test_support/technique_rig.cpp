@@ -114,14 +114,7 @@ metrics::CoverageMask TechniqueRig::coverage() {
 
 std::vector<glm::vec4> TechniqueRig::positions() {
   gl::Texture* depth = session_->executor().resource("gbuffer_depth");
-  if (!depth) return {};
-  const int w = depth->width(), h = depth->height();
-  const std::vector<glm::vec4> bottom_up = exec::read_positions(*depth, session_->camera());
-  std::vector<glm::vec4> top_down(bottom_up.size());
-  for (int y = 0; y < h; ++y)
-    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(y) * w, w,
-                top_down.begin() + static_cast<std::ptrdiff_t>(h - 1 - y) * w);
-  return top_down;
+  return depth ? exec::read_positions(*depth, session_->camera(), exec::RowOrder::top_down) : std::vector<glm::vec4>{};
 }
 
 metrics::MaskImage TechniqueRig::world_y() {

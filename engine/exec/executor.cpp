@@ -19,7 +19,6 @@ GLbitfield gl_barrier_bits(std::uint32_t bits) {
   return gl;
 }
 
-
 Status Executor::set_plan(graph::CompiledPlan plan) {
   std::vector<std::unique_ptr<PassImpl>> impls;
   for (const graph::PlannedPass& p : plan.passes) {

@@ -1,5 +1,7 @@
 #include "exec/frame_uniforms.h"
 
+#include "exec/gbuffer_readback.h"
+
 namespace penumbra::exec {
 
 FrameUniforms frame_uniforms(const FrameInputs& frame) {
@@ -10,6 +12,10 @@ FrameUniforms frame_uniforms(const FrameInputs& frame) {
   u.inverse_projection = glm::inverse(u.projection);
   u.camera_position = glm::vec4(frame.camera.position, 1.0f);
   u.screen = glm::ivec4(frame.screen_w, frame.screen_h, 0, 0);
+  const PixelRays rays = pixel_rays(u.view, u.projection, frame.screen_w, frame.screen_h);
+  u.ray00 = glm::vec4(rays.ray00, 0.0f);
+  u.ray_dx = glm::vec4(rays.ray_dx, 0.0f);
+  u.ray_dy = glm::vec4(rays.ray_dy, 0.0f);
   return u;
 }
 

@@ -19,8 +19,11 @@ struct FrameUniforms {
   glm::mat4 inverse_projection;
   glm::vec4 camera_position;  // w = 1
   glm::ivec4 screen;          // width, height, 0, 0 (pixels)
+  glm::vec4 ray00;            // exec::PixelRays at the screen size (xyz; w = 0)
+  glm::vec4 ray_dx;
+  glm::vec4 ray_dy;
 };
-static_assert(sizeof(FrameUniforms) == 4 * 64 + 16 + 16, "std140 layout of FrameUniforms");
+static_assert(sizeof(FrameUniforms) == 4 * 64 + 5 * 16, "std140 layout of FrameUniforms");
 
 FrameUniforms frame_uniforms(const FrameInputs& frame);
 

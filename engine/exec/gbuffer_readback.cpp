@@ -1,16 +1,30 @@
 #include "exec/gbuffer_readback.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace penumbra::exec {
 
-glm::vec3 world_from_view_depth(const glm::mat4& inverse_view, const glm::mat4& inverse_projection, int x, int y,
-                                int width, int height, float view_depth) {
-  const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(width, height) * 2.0f - 1.0f;
-  const glm::vec4 near_point = inverse_projection * glm::vec4(ndc, -1.0f, 1.0f);
-  const glm::vec3 ray = glm::vec3(near_point) / near_point.w;
-  const glm::vec3 view_point = ray * (view_depth / -ray.z);
-  return glm::vec3(inverse_view * glm::vec4(view_point, 1.0f));
+PixelRays pixel_rays(const glm::mat4& view, const glm::mat4& projection, int width, int height) {
+  const glm::mat4 inverse_view = glm::inverse(view);
+  const glm::mat4 inverse_projection = glm::inverse(projection);
+  // The world-space ray through a point of the near plane, scaled to view depth 1.
+  const auto ray_at = [&](float ndc_x, float ndc_y) {
+    const glm::vec4 near_point = inverse_projection * glm::vec4(ndc_x, ndc_y, -1.0f, 1.0f);
+    const glm::vec3 view_ray = glm::vec3(near_point) / near_point.w;
+    return glm::vec3(inverse_view * glm::vec4(view_ray / -view_ray.z, 0.0f));
+  };
+  PixelRays r;
+  r.origin = glm::vec3(inverse_view[3]);
+  r.ray00 = ray_at(-1.0f, -1.0f);
+  r.ray_dx = (ray_at(1.0f, -1.0f) - r.ray00) / static_cast<float>(std::max(width, 1));
+  r.ray_dy = (ray_at(-1.0f, 1.0f) - r.ray00) / static_cast<float>(std::max(height, 1));
+  return r;
+}
+
+glm::vec3 world_from_view_depth(const PixelRays& rays, int x, int y, float view_depth) {
+  const glm::vec3 ray = rays.ray00 + (static_cast<float>(x) + 0.5f) * rays.ray_dx + (static_cast<float>(y) + 0.5f) * rays.ray_dy;
+  return rays.origin + view_depth * ray;
 }
 
 namespace {
@@ -36,19 +50,20 @@ glm::vec3 decode_octahedral_normal(glm::vec2 stored) {
   return glm::normalize(n);
 }
 
-std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_depth, const scene::Camera& camera) {
+std::vector<glm::vec4> read_positions(const gl::Texture& gbuffer_depth, const scene::Camera& camera, RowOrder rows) {
   const int w = gbuffer_depth.width(), h = gbuffer_depth.height();
   const std::vector<float> depth = gbuffer_depth.read();
   const int c = gbuffer_depth.info().channels;
-  const glm::mat4 inverse_view = glm::inverse(camera.view());
-  const glm::mat4 inverse_projection = glm::inverse(camera.projection(static_cast<float>(w) / static_cast<float>(h)));
+  const PixelRays rays =
+      pixel_rays(camera.view(), camera.projection(static_cast<float>(w) / static_cast<float>(h)), w, h);
   std::vector<glm::vec4> out(static_cast<size_t>(w) * h, glm::vec4(0.0f));
-  for (int y = 0; y < h; ++y)
+  for (int y = 0; y < h; ++y) {
+    const int row = rows == RowOrder::top_down ? h - 1 - y : y;
     for (int x = 0; x < w; ++x) {
-      const size_t i = static_cast<size_t>(y) * w + x;
-      const float d = depth[i * c];
-      if (d > 0.0f) out[i] = glm::vec4(world_from_view_depth(inverse_view, inverse_projection, x, y, w, h, d), d);
+      const float d = depth[(static_cast<size_t>(y) * w + x) * c];
+      if (d > 0.0f) out[static_cast<size_t>(row) * w + x] = glm::vec4(world_from_view_depth(rays, x, y, d), d);
     }
+  }
   return out;
 }
 

@@ -1,5 +1,6 @@
 #include "exec/pass.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "exec/shader_cache.h"
@@ -88,24 +89,24 @@ void PassContext::bind_image(GLuint unit, std::string_view slot, GLenum access, 
 }
 
 bool PassContext::images_match(const gl::ShaderProgram& p) const {
+  const std::vector<gl::ImageDeclaration>& declarations = p.program().images();
   for (const BoundImage& bound : images_) {
-    const std::string want = graph::image_format_qualifier(bound.format);
-    std::string declared;
-    bool any = false, match = false;
-    for (const gl::ImageDeclaration& d : p.program().images())
-      if (d.binding == bound.unit) {
-        any = true;
-        match = match || d.qualifier == want;
-        declared += (declared.empty() ? "" : " or ") + d.qualifier + " (" + d.name + ")";
-      }
-    if (any && !match) {
-      const graph::PlannedBinding* b = find(bound.slot);
-      binding_error_ = make_error("image unit " + std::to_string(bound.unit) + " is declared " + declared +
-                                  " in the shader, but slot '" + bound.slot + "' holds '" +
-                                  (b ? b->resource : std::string("?")) + "', a " + graph::format_name(bound.format) +
-                                  " texture (qualifier " + want + ")");
-      return false;
-    }
+    const std::string_view want = graph::image_format_qualifier(bound.format);
+    const auto at_unit = [&](const gl::ImageDeclaration& d) { return d.binding == bound.unit; };
+    const bool any = std::ranges::any_of(declarations, at_unit);
+    if (!any || std::ranges::any_of(declarations, [&](const gl::ImageDeclaration& d) {
+          return at_unit(d) && d.qualifier == want;
+        }))
+      continue;
+    std::string declared;  // the message is built only for a mismatch: this runs every dispatch
+    for (const gl::ImageDeclaration& d : declarations)
+      if (at_unit(d)) declared += (declared.empty() ? "" : " or ") + d.qualifier + " (" + d.name + ")";
+    const graph::PlannedBinding* b = find(bound.slot);
+    binding_error_ = make_error("image unit " + std::to_string(bound.unit) + " is declared " + declared +
+                                " in the shader, but slot '" + bound.slot + "' holds '" +
+                                (b ? b->resource : std::string("?")) + "', a " + graph::format_name(bound.format) +
+                                " texture (qualifier " + std::string(want) + ")");
+    return false;
   }
   return true;
 }

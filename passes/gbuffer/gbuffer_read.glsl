@@ -23,13 +23,12 @@ vec3 decode_normal(vec2 stored) {
 }
 
 // World position of G-buffer pixel `pixel` whose linear view depth is `view_depth`: the
-// pixel centre's ray through the camera, scaled to that depth.
+// pixel centre's camera ray (linear in the pixel, set up once per frame: exec::PixelRays),
+// scaled to that depth.
 vec3 world_from_view_depth(ivec2 pixel, float view_depth) {
-  vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame_screen.xy) * 2.0 - 1.0;
-  vec4 near_point = frame_inverse_projection * vec4(ndc, -1.0, 1.0);
-  vec3 ray = near_point.xyz / near_point.w;  // view space, z < 0
-  vec3 view_point = ray * (view_depth / -ray.z);
-  return (frame_inverse_view * vec4(view_point, 1.0)).xyz;
+  vec2 xy = vec2(pixel) + 0.5;
+  vec3 ray = frame_ray00.xyz + xy.x * frame_ray_dx.xyz + xy.y * frame_ray_dy.xyz;
+  return frame_camera_position.xyz + view_depth * ray;
 }
 
 // What a stored position texel used to hold: world xyz, w = linear view depth (> 0), or

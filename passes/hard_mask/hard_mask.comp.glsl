@@ -1,8 +1,10 @@
 #version 450 core
-#include "gbuffer/gbuffer_read.glsl"
 // Hard shadow: one depth comparison per pixel at the nearest shadow-map texel; the mask is
-// exactly 0 or 1.
+// exactly 0 or 1. A receiver that faces away from the light is 0 too; its normal is read only
+// where the comparison says lit, since a shadowed pixel is 0 either way (4 of the pass's 9
+// contract bytes a pixel are the normal).
 #include "screen_pass.glsl"
+#include "gbuffer/gbuffer_read.glsl"
 #include "common/shadow_common.glsl"
 layout(MASK_QUALIFIER, binding = 0) uniform writeonly image2D u_mask;  // the mask texture's format (a define)
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
@@ -15,9 +17,7 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
   vec4 pos = gbuffer_position(u_depth, p);
   float lit = 1.0;
-  if (pos.w > 0.0 && faces_away_from_light(pos.xyz, gbuffer_normal(u_normal, p))) {
-    lit = 0.0;
-  } else if (pos.w > 0.0) {
+  if (pos.w > 0.0) {
     vec3 c = shadow_coord(pos.xyz);
     if (all(greaterThanEqual(c, vec3(0.0))) && all(lessThanEqual(c, vec3(1.0)))) {
       ivec2 size = textureSize(u_shadow_map, 0);
@@ -25,6 +25,7 @@ void main() {
       float blocker = texelFetch(u_shadow_map, t, 0).r;
       lit = c.z - u_depth_bias <= blocker ? 1.0 : 0.0;
     }
+    if (lit > 0.0 && faces_away_from_light(pos.xyz, gbuffer_normal(u_normal, p))) lit = 0.0;
   }
   imageStore(u_mask, p, vec4(lit));
 }

@@ -10,7 +10,8 @@
 // the emitter plane (directional) or light position (spot), world units.
 //
 // Output: mean blocker distance from the light in world units, 0 where no blocker was found
-// (fully lit, background, or outside the shadow map). Taps: `samples` Vogel-disk positions
+// (fully lit, background, or outside the shadow map) and where the receiver faces away from the
+// light (the filter writes 0 there whatever the blockers). Taps: `samples` Vogel-disk positions
 // rotated per pixel by 2 pi IGN(pixel), each a textureGather of 4 raw depths (so 4 x samples
 // texels), each compared against the receiver plane (Isidoro 2006) minus a constant bias.
 #include "screen_pass.glsl"
@@ -32,7 +33,7 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_blocker)))) return;
   float mean_blocker = 0.0;
   Receiver r;
-  if (shadow_receiver(u_depth, u_normal, p, r)) {
+  if (!self_shadowed(u_depth, u_normal, p) && shadow_receiver(u_depth, u_normal, p, r)) {
     float d_r = light_distance(r.coord.z);
     float width = min(blocker_search_width_uv(d_r) * u_light_size_scale, u_max_search_uv);
     float radius = 0.5 * width;

@@ -31,7 +31,9 @@ void main() {
   float lit = 1.0;
   float d_b = texelFetch(u_blocker, p, 0).r;
   Receiver r;
-  if (d_b > 0.0 && shadow_receiver(u_depth, u_normal, p, r)) {
+  if (self_shadowed(u_depth, u_normal, p)) {
+    lit = 0.0;  // facing away from the light: no taps needed
+  } else if (d_b > 0.0 && shadow_receiver(u_depth, u_normal, p, r)) {
     float d_r = light_distance(r.coord.z);
     float w_penumbra = min(penumbra_width_uv(d_r, d_b) * u_light_size_scale, u_max_filter_uv);
     float radius = 0.5 * w_penumbra;
@@ -41,6 +43,5 @@ void main() {
       sum += pcf_tap(u_shadow_map, r, vogel_disk_sample(i, u_samples, phi) * radius, u_depth_bias);
     lit = sum / float(u_samples);
   }
-  if (self_shadowed(u_depth, u_normal, p)) lit = 0.0;
   imageStore(u_mask, p, vec4(lit));
 }

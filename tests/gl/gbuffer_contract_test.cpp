@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "exec/gbuffer_readback.h"
 #include "exec/pass_decl_builder.h"
 #include "scene/mesh_builder.h"
@@ -149,7 +151,7 @@ TEST_P(GBufferContract, RebuiltPositionsAndNormalsMatchTheGeometry) {
   EXPECT_LT(e.nearest, 6.0 * scale);
   EXPECT_GT(e.farthest, 20.0 * scale);
   // The bound documented in docs/writing-a-technique.md: float32 interpolation of the view depth
-  // and the camera's inverse matrices, a few parts in a million at any scale.
+  // and the per-frame camera rays (exec::PixelRays), a few parts in a million at any scale.
   EXPECT_LT(e.worst_relative, 1e-5) << "scale " << scale;
   std::printf("scale %g: %d receivers, view depth %.3g..%.3g, worst position error %.3g of the depth, normal %.4f deg\n", scale, e.compared, e.nearest, e.farthest, e.worst_relative, e.worst_normal_degrees);
   // RG16 octahedral: 16 bits a component, a few thousandths of a degree (Cigolle et al. 2014,
@@ -158,6 +160,33 @@ TEST_P(GBufferContract, RebuiltPositionsAndNormalsMatchTheGeometry) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, GBufferContract, ::testing::Values(1e-3f, 1.0f, 1e3f));
+
+// The per-frame ray basis the passes use against the two inverse matrices it replaces, on a
+// centred and an off-centre (shifted) perspective frustum, at the corners and the middle.
+TEST(PixelRays, RebuildTheSamePointsAsTheInverseMatrices) {
+  const glm::mat4 view = glm::lookAt(glm::vec3(3.0f, 2.0f, 7.0f), glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0, 1, 0));
+  constexpr int kW = 1920, kH = 1080;
+  for (const glm::mat4& projection : {glm::perspective(0.9f, 16.0f / 9.0f, 0.05f, 500.0f),
+                                      glm::frustum(-0.02f, 0.07f, -0.03f, 0.02f, 0.05f, 500.0f)}) {
+    const exec::PixelRays rays = exec::pixel_rays(view, projection, kW, kH);
+    const glm::dmat4 inverse_view = glm::inverse(glm::dmat4(view)), inverse_projection = glm::inverse(glm::dmat4(projection));
+    double worst = 0.0;
+    for (const glm::ivec2 px : {glm::ivec2(0, 0), glm::ivec2(kW - 1, 0), glm::ivec2(0, kH - 1), glm::ivec2(kW - 1, kH - 1),
+                                glm::ivec2(kW / 2, kH / 3)})
+      for (const double depth : {0.1, 3.0, 250.0}) {
+        const glm::dvec2 ndc = (glm::dvec2(px) + 0.5) / glm::dvec2(kW, kH) * 2.0 - 1.0;
+        const glm::dvec4 near_point = inverse_projection * glm::dvec4(ndc, -1.0, 1.0);
+        const glm::dvec3 ray = glm::dvec3(near_point) / near_point.w;
+        const glm::dvec3 exact = glm::dvec3(inverse_view * glm::dvec4(ray * (depth / -ray.z), 1.0));
+        const glm::dvec3 rebuilt(exec::world_from_view_depth(rays, px.x, px.y, static_cast<float>(depth)));
+        worst = std::max(worst, glm::length(rebuilt - exact) / depth);
+      }
+    // float32 world coordinates: the camera position's rounding (7.8 units here) is a few parts in
+    // a million of the nearest depth, 0.1; the contract's documented bound is 1e-5.
+    EXPECT_LT(worst, 1e-5);
+    EXPECT_GT(worst, 0.0);  // float32, not the double computation itself
+  }
+}
 
 TEST(OctahedralNormal, EncodeDecodeRoundTripsEveryDirection) {
   double worst = 0.0;

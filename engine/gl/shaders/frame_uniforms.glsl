@@ -7,4 +7,7 @@ layout(std140, binding = 0) uniform FrameUniforms {
   mat4 frame_inverse_projection;
   vec4 frame_camera_position;
   ivec4 frame_screen;
+  vec4 frame_ray00;   // camera ray of pixel coordinate (0, 0) at view depth 1 (exec::PixelRays)
+  vec4 frame_ray_dx;  // its change per pixel right
+  vec4 frame_ray_dy;  // and up
 };
