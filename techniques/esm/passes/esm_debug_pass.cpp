@@ -26,7 +26,7 @@ class DebugPass final : public exec::PassImpl {
 exec::PassType debug_pass_type() {
   return exec::PassDeclBuilder("esm_debug")
       .describe("Extended shadow map debug views: edge distance (texels) and silhouette mask (compute)")
-      .sampled("esm", {Format::RGBA32F})
+      .sampled("esm", {Format::RG32F})
       .image_out("edge_distance", {Format::R32F})
       .image_out("silhouette_mask", {Format::R16F})
       .same_size({"esm", "edge_distance", "silhouette_mask"})

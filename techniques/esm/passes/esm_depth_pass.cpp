@@ -2,7 +2,7 @@
 // the scene from the light point of view proceeds as in conventional shadow maps"), face by face:
 // the casters' depth into the depth attachment with passes/shadow_map's program and biases
 // (slope-scaled + constant polygon offset, alpha-tested casters), so that with the quads disabled
-// the shadow test is plain shadow mapping; and the RGBA32F map cleared to each texel's "no edge"
+// the shadow test is plain shadow mapping; and the RG32F map cleared to each texel's "no edge"
 // values by a compute dispatch (esm_clear.comp.glsl says why not glClearTexImage). The map depth lives in the depth attachment only (the paper's green channel): the
 // quads and the test read it there, and a depth-only raster pass costs no colour bandwidth.
 #include "exec/gpu_scene.h"
@@ -34,11 +34,11 @@ class DepthPass final : public exec::PassImpl {
       if (Status s = fb_.finish(); !s) return s;
       attached_ = depth.id();
     }
-    // A texel no quad reaches (esm_common.glsl): r and b neutral for MAX blending (0), or the
+    // A texel no quad reaches (esm_common.glsl): r and g neutral for MAX blending (0), or the
     // paper's defaults for its two-pass fallback (lit-ness 0.75 -> r = 0.25, "maximal distance"
-    // b = 1), which the fallback's first quad pass overwrites; mask 0.
+    // g = 1), which the fallback's first quad pass overwrites; r below QUAD_MARK: no quad.
     const bool two_pass = ctx.enumeration("overlap_resolve") == "two_pass";
-    const glm::vec4 no_edge(two_pass ? 0.25f : 0.0f, 0.0f, two_pass ? 1.0f : 0.0f, 0.0f);
+    const glm::vec4 no_edge(two_pass ? 0.25f : 0.0f, two_pass ? 1.0f : 0.0f, 0.0f, 0.0f);
     ctx.bind_image(0, "esm", GL_WRITE_ONLY);
     clear.program().set("u_value", no_edge);
     ctx.dispatch_over(clear, esm);
@@ -82,7 +82,7 @@ exec::PassType depth_pass_type() {
       .imported("scene")
       .imported("light")
       .depth_out("depth")
-      .color_out("esm", {Format::RGBA32F})
+      .color_out("esm", {Format::RG32F})
       .same_size({"depth", "esm"})
       .real("slope_bias", 1.5, 0.0, 10.0, "", "Depth pass slope-scaled bias (glPolygonOffset factor)")
       .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "Depth pass constant bias (glPolygonOffset units)")

@@ -60,7 +60,7 @@ class MaskPass final : public exec::PassImpl {
 exec::PassType mask_pass_type() {
   return passes::shadow_receiver_pass(
              "esm_mask", "Extended shadow map test: point-filtered depth and edge depth, bilinear edge distance (compute)")
-      .sampled("esm", {Format::RGBA32F})
+      .sampled("esm", {Format::RG32F})
       .image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "mask"})
       .same_size({"shadow_map", "esm"})

@@ -1,7 +1,7 @@
 #pragma once
 // The pass types of the esm technique (Bujnak, extended shadow maps):
 //   esm_depth             raster: the depth map of every face into the depth attachment; the
-//                         RGBA32F extended map cleared to each texel's defaults (section 4)
+//                         RG32F extended map cleared to each texel's defaults (section 4)
 //   esm_silhouette_quads  raster: the silhouette quads of every mesh, MAX-blended into the
 //                         extended map, or overwriting it (the paper's two-pass fallback's first
 //                         pass) (section 4.1)

@@ -2,7 +2,7 @@
 // extended shadow map (Bujnak, section 4.1). blend = max: MAX blending, so where quads overlap
 // the map keeps the farthest edge depth and the most shadowed edge value (the paper's "maximal
 // depth, minimal distance"); the depth pass's neutral defaults make one pass enough. blend =
-// overwrite: no blending, r, b and a replaced by whichever quad comes last: the first pass of the
+// overwrite: no blending, r and g replaced by whichever quad comes last: the first pass of the
 // paper's two-pass fallback, for hardware without that blend mode, followed by a max pass.
 #include "exec/gpu_scene.h"
 #include "exec/pass_decl_builder.h"
@@ -45,8 +45,6 @@ class SilhouetteQuadPass final : public exec::PassImpl {
     if (max_blend) {
       glEnablei(GL_BLEND, 0);
       glBlendEquationi(0, GL_MAX);  // the factors do not apply to MAX
-    } else {
-      glColorMaski(0, GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);  // r, b, a (g is unused)
     }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -89,7 +87,7 @@ exec::PassType silhouette_quad_pass_type() {
             "Hidden edges: an edge writes no texel whose surface is nearer the light than the edge (outside its "
             "occluder) or than its lit facet's plane (inside) by more than this many texel footprints");
   graph::PassTypeDecl decl = b.decl();
-  decl.slots.push_back(blended_attachment("esm", Format::RGBA32F));
+  decl.slots.push_back(blended_attachment("esm", Format::RG32F));
   return {decl, [] { return std::make_unique<SilhouetteQuadPass>(); }};
 }
 

@@ -6,13 +6,16 @@
 // coordinate t runs 0 -> 1 across the band, so the edge passes through t = 1/3 and t = 1/2 lies
 // 0.707 texels outside the edge (section 4.2): BAND_OUT = 2 sqrt 2, BAND_IN = sqrt 2.
 //
-// Channels of the RGBA32F map:
-//   r  1 - edge_transfer(t): the INVERTED lit-ness, so MAX blending of overlapping quads keeps
-//      the most shadowed one ("minimal distance, maximal value", section 4.1); 0 = no quad
-//   g  unused (0): the map depth, the paper's green channel, is the depth attachment, which the
-//      quads and the shadow test read (with its polygon offset, as plain shadow mapping)
-//   b  edge depth: window depth of the silhouette edge at this texel (MAX: the farthest edge)
-//   a  silhouette mask: 1 where a quad wrote
+// The map is RG32F, 8 bytes a texel (it was RGBA32F with an unused channel: 16):
+//   r  QUAD_MARK + 1 - edge_transfer(t) where a quad wrote, the INVERTED lit-ness, so MAX
+//      blending of overlapping quads keeps the most shadowed one ("minimal distance, maximal
+//      value", section 4.1); below QUAD_MARK where none did (the depth pass's "no edge" value).
+//      The mark is the silhouette mask: every quad value lies above every "no edge" value, so
+//      MAX keeps it, and one gather of r says whether a footprint has quads.
+//   g  edge depth: window depth of the silhouette edge at this texel (MAX: the farthest edge)
+// The map depth, the paper's green channel, is the depth attachment, which the quads and the
+// shadow test read (with its polygon offset, as plain shadow mapping).
+const float QUAD_MARK = 2.0;        // added to r where a quad wrote; "no edge" r is < 1
 const float BAND_OUT = 2.8284271;  // texels outside the edge
 const float BAND_IN = 1.4142136;   // texels inside the occluder
 const float EDGE_T = 1.0 / 3.0;    // quad coordinate of the edge
@@ -31,3 +34,12 @@ float edge_transfer(float t) { return clamp((t - GUARD_T) / (1.0 - GUARD_T), 0.0
 
 // Lit-ness of the edge itself.
 float edge_litness() { return edge_transfer(EDGE_T); }
+
+// A map texel as (inverted lit-ness, 0, edge depth, mask), from the stored RG32F pair.
+vec4 esm_decode(vec2 stored) {
+  bool quad = stored.x >= QUAD_MARK;
+  return vec4(quad ? stored.x - QUAD_MARK : stored.x, 0.0, stored.y, quad ? 1.0 : 0.0);
+}
+
+// What a quad writes: inverted lit-ness and edge depth.
+vec2 esm_encode_quad(float inverted_litness, float edge_depth) { return vec2(QUAD_MARK + inverted_litness, edge_depth); }

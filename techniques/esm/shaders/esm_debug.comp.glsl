@@ -11,7 +11,7 @@ uniform sampler2D u_esm;
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_edge_distance)))) return;
-  vec4 t = texelFetch(u_esm, p, 0);
+  vec4 t = esm_decode(texelFetch(u_esm, p, 0).rg);
   float mask = t.a > 0.5 ? 1.0 : 0.0;
   // Inverse of edge_transfer(quad_coordinate(d)) above the guard zone.
   float quad_t = (1.0 - t.r) * (1.0 - GUARD_T) + GUARD_T;

@@ -28,7 +28,7 @@ layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;   // the depth pass's biased depth (nearest texel fetches)
-uniform sampler2D u_esm;          // RGBA32F extended map (texel fetches, a gather of the mask)
+uniform sampler2D u_esm;          // RG32F extended map (esm_common.glsl; texel fetches, a gather of r)
 uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
 uniform float u_boundary;         // lit-ness of the shadow boundary (edge_transfer at the edge + shift)
 uniform float u_aa_width;         // pixels; 0 = a binary edge
@@ -84,10 +84,10 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   bool a = z > texelFetch(u_shadow_map, nearest, 0).r;
   // Away from silhouettes (most receivers) no texel of the footprint has a quad: one gather of
   // the mask channel says so, and the answer is the plain test's.
-  vec4 masks = textureGather(u_esm, (vec2(i0) + 1.0) / vec2(textureSize(u_esm, 0)), 3);
-  if (all(lessThan(masks, vec4(0.5)))) return a ? 0.0 : 1.0;
-  vec4 t00 = texelFetch(u_esm, i0, 0), t10 = texelFetch(u_esm, i0 + ivec2(1, 0), 0);
-  vec4 t01 = texelFetch(u_esm, i0 + ivec2(0, 1), 0), t11 = texelFetch(u_esm, i0 + ivec2(1, 1), 0);
+  vec4 marked = textureGather(u_esm, (vec2(i0) + 1.0) / vec2(textureSize(u_esm, 0)), 0);
+  if (all(lessThan(marked, vec4(QUAD_MARK)))) return a ? 0.0 : 1.0;
+  vec4 t00 = esm_decode(texelFetch(u_esm, i0, 0).rg), t10 = esm_decode(texelFetch(u_esm, i0 + ivec2(1, 0), 0).rg);
+  vec4 t01 = esm_decode(texelFetch(u_esm, i0 + ivec2(0, 1), 0).rg), t11 = esm_decode(texelFetch(u_esm, i0 + ivec2(1, 1), 0).rg);
   float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
   float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
   vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);

@@ -50,7 +50,7 @@ bool nearer_surface(float depth) {
   float distance = esm_light_distance(depth);
   return esm_light_distance(occluder) < distance - u_hidden_tolerance * esm_texel_world(distance);
 }
-layout(location = 0) out vec4 o_esm;
+layout(location = 0) out vec2 o_esm;
 
 void main() {
   vec2 f = gl_FragCoord.xy - u_tile_origin;  // texel centre, tile coordinates
@@ -72,5 +72,5 @@ void main() {
     float own = depth_on_plane(f, v_front_plane);
     if (own >= 0.0 && own <= 1.0 && nearer_surface(own)) discard;
   }
-  o_esm = vec4(1.0 - edge_transfer(quad_coordinate(d)), 0.0, edge_depth, 1.0);
+  o_esm = esm_encode_quad(1.0 - edge_transfer(quad_coordinate(d)), edge_depth);
 }
