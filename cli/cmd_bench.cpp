@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
+#include "exec/tile_list_readback.h"
 #include "measurement/bench_report.h"
 #include "gl/context.h"
 #include "measurement/memory_peaks.h"
@@ -162,8 +164,12 @@ int cmd_bench(const std::vector<std::string>& argv) {
                        o.warmup, o.frames);
           if (Status s = select_technique(session, t, o.sets); !s) return fail(s.error());
           if (Status s = render_timed_frames(session, o.warmup, o.frames); !s) return fail(s.error());
+          std::map<std::string, double> tile_fractions;  // the last frame's tile lists, read back
+          for (const graph::PlannedPass& p : session.executor().plan().passes)
+            if (auto c = exec::dispatched_tiles(session.executor(), p)) tile_fractions[p.name] = c->fraction();
           BenchRow row{t.label, scene.name, width, height, shadow,
-                       bench_passes(pass_medians(session, o.frames), session.executor().plan()), 0.0, 0.0};
+                       bench_passes(pass_medians(session, o.frames), session.executor().plan(), tile_fractions),
+                       0.0, 0.0};
           for (const BenchPass& p : row.passes) {
             row.total_ms += p.ms;
             if (!p.frame) row.technique_ms += p.ms;

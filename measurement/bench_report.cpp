@@ -9,7 +9,8 @@ namespace penumbra::measurement {
 
 double BenchPass::gb_per_s() const { return ms > 0.0 ? static_cast<double>(traffic.total()) / (ms * 1e-3) / 1e9 : 0.0; }
 
-std::vector<BenchPass> bench_passes(const std::vector<PassMedian>& medians, const graph::CompiledPlan& plan) {
+std::vector<BenchPass> bench_passes(const std::vector<PassMedian>& medians, const graph::CompiledPlan& plan,
+                                    const std::map<std::string, double>& tile_fractions) {
   std::vector<BenchPass> out;
   for (const PassMedian& m : medians) {
     BenchPass p{m.name, m.ms, {}, false};
@@ -18,6 +19,10 @@ std::vector<BenchPass> bench_passes(const std::vector<PassMedian>& medians, cons
     if (planned != plan.passes.end()) {
       p.traffic = planned->traffic;
       p.frame = planned->frame;
+      if (auto f = tile_fractions.find(m.name); f != tile_fractions.end() && graph::dispatch_tile_list(*planned)) {
+        p.tile_fraction = f->second;
+        p.traffic = graph::pass_traffic(plan, *planned, f->second);
+      }
     }
     out.push_back(std::move(p));
   }
@@ -47,7 +52,7 @@ std::string bench_report_json(const BenchReport& report) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (const BenchRow& r : report.rows) {
     nlohmann::ordered_json passes = nlohmann::ordered_json::array();
-    for (const BenchPass& p : r.passes)
+    for (const BenchPass& p : r.passes) {
       passes.push_back({{"name", p.name},
                         {"ms", p.ms},
                         {"read_bytes", p.traffic.read_bytes},
@@ -55,6 +60,8 @@ std::string bench_report_json(const BenchReport& report) {
                         {"gb_per_s", p.gb_per_s()},
                         {"percent_of_copy_peak", percent_of_peak(p, report.peaks)},
                         {"frame", p.frame}});
+      if (p.tile_fraction) passes.back()["tile_fraction"] = *p.tile_fraction;
+    }
     rows.push_back({{"technique", r.technique},
                     {"scene", r.scene},
                     {"size", std::to_string(r.width) + "x" + std::to_string(r.height)},

@@ -3,9 +3,12 @@
 //   {"device":..., "renderer":..., "peaks": {"copy_gb_per_s":..., ...},
 //    "rows":[{"technique":..., "scene":..., "size":..., "shadow_size":...,
 //             "passes":[{"name":..., "ms":..., "read_bytes":..., "written_bytes":...,
-//                        "gb_per_s":..., "percent_of_copy_peak":..., "frame":...}],
+//                        "gb_per_s":..., "percent_of_copy_peak":..., "frame":...,
+//                        "tile_fraction":... (passes over a tile list only)}],
 //             "total_ms":..., "technique_ms":...}]}
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +23,7 @@ struct BenchPass {
   double ms = 0.0;                   // median
   graph::PassTraffic traffic;        // bytes per execution, from the plan (graph --traffic)
   bool frame = false;                // G-buffer, lighting: the frame's passes, not the technique's
+  std::optional<double> tile_fraction;  // a pass over a tile list: the share of tiles it ran over
   double gb_per_s() const;           // traffic / time; 0 when the time is 0
 };
 
@@ -31,8 +35,10 @@ struct BenchRow {
   double technique_ms = 0.0;      // sum over the technique's own passes
 };
 
-// The medians of a session's passes, each with its planned traffic.
-std::vector<BenchPass> bench_passes(const std::vector<PassMedian>& medians, const graph::CompiledPlan& plan);
+// The medians of a session's passes, each with its planned traffic; a pass over a tile list
+// with the traffic of the tiles it ran over (`tile_fractions`: pass name -> share read back).
+std::vector<BenchPass> bench_passes(const std::vector<PassMedian>& medians, const graph::CompiledPlan& plan,
+                                    const std::map<std::string, double>& tile_fractions = {});
 
 struct BenchReport {
   std::string device;    // GL context backend, e.g. "egl (device 0: NVIDIA)"

@@ -15,6 +15,7 @@ GLbitfield gl_barrier_bits(std::uint32_t bits) {
   if (bits & graph::barrier_shader_image_access) gl |= GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
   if (bits & graph::barrier_framebuffer) gl |= GL_FRAMEBUFFER_BARRIER_BIT;
   if (bits & graph::barrier_storage_buffer) gl |= GL_SHADER_STORAGE_BARRIER_BIT;
+  if (bits & graph::barrier_command) gl |= GL_COMMAND_BARRIER_BIT;
   if (bits & graph::barrier_texture_update) gl |= GL_TEXTURE_UPDATE_BARRIER_BIT;
   return gl;
 }
@@ -121,6 +122,10 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
 
 gl::Texture* Executor::physical_texture(int id) const {
   return id >= 0 && id < static_cast<int>(textures_.size()) ? textures_[id] : nullptr;
+}
+
+gl::Buffer* Executor::physical_buffer(int id) const {
+  return id >= 0 && id < static_cast<int>(buffers_.size()) ? buffers_[id] : nullptr;
 }
 
 gl::Texture* Executor::resource(const std::string& name) const {

@@ -51,6 +51,7 @@ class Executor {
   // Keep a resource listed in CompileOptions::keep_alive to be sure no later pass reuses it.
   gl::Texture* resource(const std::string& name) const;
   gl::Texture* physical_texture(int id) const;
+  gl::Buffer* physical_buffer(int id) const;
   std::vector<std::string> resource_names() const;
 
   ExecutorOptions& options() { return options_; }

@@ -127,6 +127,24 @@ void PassContext::dispatch_tiles(const gl::ShaderProgram& p, int width, int heig
   glDispatchCompute(static_cast<GLuint>((width + tile - 1) / tile), static_cast<GLuint>((height + tile - 1) / tile), 1);
 }
 
+void PassContext::reset_tile_list(std::string_view slot) const {
+  const GLuint empty[4] = {0, 1, 1, 0};  // tiles appended (= work groups in x), 1, 1, reserved
+  gl::Buffer& list = buffer(slot);
+  glNamedBufferSubData(list.id(), 0, sizeof empty, empty);
+}
+
+void PassContext::bind_tile_list(GLuint binding, std::string_view slot) const {
+  buffer(slot).bind_base(GL_SHADER_STORAGE_BUFFER, binding);
+}
+
+void PassContext::dispatch_over_tiles(const gl::ShaderProgram& p, std::string_view slot) const {
+  if (!images_match(p)) return;
+  glUseProgram(p.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffer(slot).id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+}
+
 void PassLibrary::add(PassType type) {
   declarations_.add(type.decl);
   std::string name = type.decl.name;

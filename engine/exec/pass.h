@@ -79,6 +79,14 @@ class PassContext {
   // workgroup is larger than the block it writes (it also computes a halo around it).
   void dispatch_tiles(const gl::ShaderProgram& p, int width, int height, int tile) const;
 
+  // Tile lists (graph/resources.h; engine/gl/shaders/tile_list.glsl). The writer empties the
+  // list it fills (no tiles, dispatch arguments 0 x 1 x 1) and binds it as a storage buffer; the
+  // reader binds it at the same binding and runs one work group per appended tile, the count
+  // taken by the GPU from the list's header (indirect dispatch: no read-back).
+  void reset_tile_list(std::string_view slot) const;
+  void bind_tile_list(GLuint binding, std::string_view slot) const;
+  void dispatch_over_tiles(const gl::ShaderProgram& p, std::string_view slot) const;
+
   // Set when a dispatch was refused: an image bound to a unit whose declared format qualifier
   // differs from the texture's format (the executor reports it as the pass's error).
   const std::optional<Error>& binding_error() const { return binding_error_; }

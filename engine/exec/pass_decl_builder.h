@@ -49,6 +49,18 @@ class PassDeclBuilder {
   PassDeclBuilder& depth_out(std::string slot) {
     return add(std::move(slot), graph::Access::write, graph::Usage::depth_attachment, {Format::DEPTH32F}, true);
   }
+  // A tile list (graph/resources.h) this pass fills; a later pass dispatches over it.
+  PassDeclBuilder& tile_list_out(std::string slot) {
+    decl_.slots.push_back({std::move(slot), graph::Access::write, graph::SlotKind::buffer, {},
+                           graph::Usage::storage_buffer, true, true});
+    return *this;
+  }
+  // A tile list an earlier pass filled: this pass runs one work group per tile in it.
+  PassDeclBuilder& tile_list_in(std::string slot) {
+    decl_.slots.push_back({std::move(slot), graph::Access::read, graph::SlotKind::buffer, {},
+                           graph::Usage::indirect_dispatch, true, true});
+    return *this;
+  }
   // scene, camera, light: provided by the executor through FrameInputs.
   PassDeclBuilder& imported(std::string slot, bool required = true) {
     decl_.slots.push_back({std::move(slot), graph::Access::read, graph::SlotKind::imported, {},

@@ -31,7 +31,7 @@ struct Descriptor {
 
 Descriptor descriptor_of(const CompileState& s, int resource) {
   const ResourceDecl& r = s.graph.resources[resource];
-  Descriptor d{r.kind, r.format, s.width[resource], s.height[resource], r.bytes};
+  Descriptor d{r.kind, r.format, s.width[resource], s.height[resource], s.bytes[resource]};
   if (r.kind == ResourceKind::buffer) {
     d.format = Format::R8;
     d.width = d.height = 0;

@@ -13,6 +13,7 @@ std::uint32_t barrier_bit(Usage u) {
     case Usage::color_attachment:
     case Usage::depth_attachment: return barrier_framebuffer;
     case Usage::storage_buffer: return barrier_storage_buffer;
+    case Usage::indirect_dispatch: return barrier_command | barrier_storage_buffer;
     case Usage::imported: return barrier_none;
   }
   return barrier_none;

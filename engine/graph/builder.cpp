@@ -91,6 +91,12 @@ BufferHandle GraphBuilder::buffer(const std::string& name, std::uint64_t bytes) 
   return {add_resource({name, ResourceKind::buffer, Format::R8, {}, bytes, ""}), -1};
 }
 
+BufferHandle GraphBuilder::tile_list(const std::string& name, SizeExpr tiles) {
+  ResourceDecl r{name, ResourceKind::buffer, Format::R8, std::move(tiles), 0, ""};
+  r.tile_list = true;
+  return {add_resource(std::move(r)), -1};
+}
+
 ImportedHandle GraphBuilder::import(const std::string& name) {
   return {add_resource({name, ResourceKind::imported, Format::R8, {}, 0, ""})};
 }

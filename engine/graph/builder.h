@@ -85,6 +85,8 @@ class GraphBuilder {
   TextureHandle texture(const std::string& name, Format format, SizeExpr size);  // SizeExpr::screen_by("p") for screen/$p
   TextureHandle persistent(const std::string& name, Format format, SizeExpr size);
   BufferHandle buffer(const std::string& name, std::uint64_t bytes);
+  // A tile list over `tiles` (SizeExpr::screen(8): the screen in 8 x 8-pixel tiles).
+  BufferHandle tile_list(const std::string& name, SizeExpr tiles);
   ImportedHandle import(const std::string& name);
   PassBuilder pass(const std::string& type, const std::string& name);
   void output(TextureHandle h);

@@ -22,7 +22,7 @@ void GraphReader::read_resource(const std::string& name, const Json& j, const st
     error(GraphErrorCode::wrong_json_type, ptr, "a resource must be an object");
     return;
   }
-  check_keys(j, ptr, {"kind", "format", "size", "bytes", "description"});
+  check_keys(j, ptr, {"kind", "format", "size", "bytes", "tiles", "description"});
   std::string text;
   if (get_string(j, "kind", ptr, text, true)) {
     std::optional<ResourceKind> k = parse_resource_kind(text);
@@ -32,7 +32,7 @@ void GraphReader::read_resource(const std::string& name, const Json& j, const st
   if (r.kind == ResourceKind::texture || r.kind == ResourceKind::persistent) {
     if (get_string(j, "format", ptr, text, true)) {
       std::optional<Format> f = parse_format(text);
-      if (!f) error(GraphErrorCode::wrong_json_type, ptr + "/format", "unknown format \"" + shortened(text) + "\"; formats: R8, R16F, R32F, RG16F, RG32F, RGBA8, RGBA16F, RGBA32F, DEPTH32F");
+      if (!f) error(GraphErrorCode::wrong_json_type, ptr + "/format", "unknown format \"" + shortened(text) + "\"; formats: " + format_names());
       else r.format = *f;
     }
     if (get_string(j, "size", ptr, text, true)) {
@@ -40,12 +40,21 @@ void GraphReader::read_resource(const std::string& name, const Json& j, const st
       if (!s) error(GraphErrorCode::wrong_json_type, ptr + "/size", "bad size \"" + shortened(text) + "\"; expected screen, screen/N, screen/$param, shadow, shadow/N, shadow/$param (N in 1..64) or WxH (1..16384)");
       else r.size = *s;
     }
+  } else if (r.kind == ResourceKind::buffer && j.contains("tiles")) {
+    r.tile_list = true;
+    if (j.contains("bytes")) error(GraphErrorCode::wrong_json_type, ptr + "/bytes", "a tile list's size is its \"tiles\"; \"bytes\" does not apply");
+    if (get_string(j, "tiles", ptr, text, true)) {
+      std::optional<SizeExpr> s = SizeExpr::parse(text);
+      if (!s || s->base == SizeExpr::Base::fixed)
+        error(GraphErrorCode::wrong_json_type, ptr + "/tiles", "bad tiles \"" + shortened(text) + "\"; expected screen/N, screen/$param, shadow/N or shadow/$param, N the tile edge in pixels (a power of two in " + std::to_string(kMinTileSize) + ".." + std::to_string(kMaxTileSize) + ")");
+      else r.size = *s;
+    }
   } else if (r.kind == ResourceKind::buffer) {
     auto it = j.find("bytes");
     // 1 GiB: far more than any shadow technique needs; a bigger number is a typo.
     if (it == j.end() || !it->is_number_unsigned() || it->get<std::uint64_t>() == 0 ||
         it->get<std::uint64_t>() > (1ull << 30))
-      error(GraphErrorCode::wrong_json_type, ptr + "/bytes", "buffer needs \"bytes\": an integer in 1..1073741824");
+      error(GraphErrorCode::wrong_json_type, ptr + "/bytes", "buffer needs \"bytes\", an integer in 1..1073741824, or \"tiles\" (a tile list, docs/graph-format.md)");
     else r.bytes = it->get<std::uint64_t>();
   }
   g.resources.push_back(std::move(r));

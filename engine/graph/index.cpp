@@ -14,32 +14,52 @@ std::string where_of(const ResourceDecl& r) {
 // be a structural int parameter whose whole range is a valid divisor, so every value a user
 // can set compiles).
 int divisor_of(CompileState& s, const ResourceDecl& r) {
+  const std::string key = r.tile_list ? "/tiles" : "/size";
   const std::string& name = r.size.divisor_reference;
   if (name.empty()) return r.size.divisor;
-  const std::string who = "resource '" + r.name + "': size '" + r.size.to_string() + "'";
+  const std::string who = "resource '" + r.name + "': " + key.substr(1) + " '" + r.size.to_string() + "'";
   const ParamDesc* d = s.params.find(name);
   if (!d) {
-    s.error(GraphErrorCode::unknown_param_reference, where_of(r) + "/size",
+    s.error(GraphErrorCode::unknown_param_reference, where_of(r) + key,
             who + ": '$" + name + "' is not a parameter of graph '" + s.graph.name + "'");
     return 1;
   }
   if (d->type != ParamType::integer) {
-    s.error(GraphErrorCode::param_wrong_type, where_of(r) + "/size",
+    s.error(GraphErrorCode::param_wrong_type, where_of(r) + key,
             who + ": '$" + name + "' must be an int parameter, is " + param_type_name(d->type));
     return 1;
   }
   if (!d->structural) {
-    s.error(GraphErrorCode::param_not_structural, where_of(r) + "/size",
+    s.error(GraphErrorCode::param_not_structural, where_of(r) + key,
             who + ": '$" + name + "' must be structural (a size change recompiles the graph)");
     return 1;
   }
   if (!d->has_range() || d->min < 1 || d->max > kMaxSizeDivisor) {
-    s.error(GraphErrorCode::param_range_mismatch, where_of(r) + "/size",
+    s.error(GraphErrorCode::param_range_mismatch, where_of(r) + key,
             who + ": '$" + name + "' must have a range inside [1, " +
                 std::to_string(kMaxSizeDivisor) + "] to divide a size");
     return 1;
   }
   return s.params.get_int(name);
+}
+
+// A tile list's bytes: header + one entry per tile of the grid, the tiled area divided by the
+// tile edge rounded up (a partial tile at the border is a tile).
+std::uint64_t tile_list_size(CompileState& s, const ResourceDecl& r) {
+  const int edge = divisor_of(s, r);
+  if (!valid_tile_size(edge)) {
+    const std::string from = r.size.divisor_reference.empty() ? "" : " ('$" + r.size.divisor_reference + "')";
+    s.error(r.size.divisor_reference.empty() ? GraphErrorCode::wrong_json_type : GraphErrorCode::param_out_of_range,
+            where_of(r) + "/tiles",
+            "tile list '" + r.name + "': tile edge " + std::to_string(edge) + from + " must be a power of two in " +
+                std::to_string(kMinTileSize) + ".." + std::to_string(kMaxTileSize) + " pixels");
+    return tile_list_bytes(1, 1);
+  }
+  int w = 0, h = 0;
+  SizeExpr whole = r.size;
+  whole.divisor_reference.clear();
+  whole.resolve(s.settings, 1, w, h);
+  return tile_list_bytes((w + edge - 1) / edge, (h + edge - 1) / edge);
 }
 
 }  // namespace
@@ -49,6 +69,7 @@ void index_resources(CompileState& s) {
   s.resource_index.reserve(res.size());
   s.width.assign(res.size(), 0);
   s.height.assign(res.size(), 0);
+  s.bytes.assign(res.size(), 0);
   s.version_of.assign(res.size(), {});
   for (size_t i = 0; i < res.size(); ++i) {
     auto [it, inserted] = s.resource_index.emplace(res[i].name, static_cast<int>(i));
@@ -57,6 +78,8 @@ void index_resources(CompileState& s) {
               "resource '" + res[i].name + "' is declared twice");
     if (res[i].kind == ResourceKind::texture || res[i].kind == ResourceKind::persistent)
       res[i].size.resolve(s.settings, divisor_of(s, res[i]), s.width[i], s.height[i]);
+    else if (res[i].kind == ResourceKind::buffer)
+      s.bytes[i] = res[i].tile_list ? tile_list_size(s, res[i]) : res[i].bytes;
   }
 }
 

@@ -21,6 +21,7 @@ const char* usage_name(Usage u) {
     case Usage::color_attachment: return "color_attachment";
     case Usage::depth_attachment: return "depth_attachment";
     case Usage::storage_buffer: return "storage_buffer";
+    case Usage::indirect_dispatch: return "indirect_dispatch";
     case Usage::imported: return "imported";
   }
   return "?";

@@ -25,9 +25,11 @@ namespace penumbra::graph {
 enum class Access { read, write, read_write };
 // How the pass touches the resource; drives barrier planning. image_store / storage_buffer
 // writes are incoherent in GL and need a barrier before the next use.
+// indirect_dispatch: a tile list the pass dispatches over (its header as the indirect
+// arguments, its entries read as a storage buffer).
 enum class Usage {
   sampled, image_load, image_store, color_attachment, depth_attachment, storage_buffer,
-  imported
+  indirect_dispatch, imported
 };
 // texture slots accept texture and persistent resources.
 enum class SlotKind { texture, buffer, imported };
@@ -43,6 +45,7 @@ struct SlotDecl {
   std::vector<Format> formats;  // accepted formats; empty = any
   Usage usage = Usage::sampled;
   bool required = true;
+  bool tile_list = false;  // a buffer slot that takes only a tile list (graph/resources.h)
 };
 
 struct PassTypeDecl {

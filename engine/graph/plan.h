@@ -21,6 +21,7 @@ enum BarrierBit : std::uint32_t {
   barrier_framebuffer = 1u << 2,           // attachment use after an image store
   barrier_storage_buffer = 1u << 3,        // SSBO access after an SSBO write
   barrier_texture_update = 1u << 4,        // reserved for uploads/readbacks
+  barrier_command = 1u << 5,               // indirect arguments after an SSBO write
 };
 std::string barrier_bits_to_string(std::uint32_t bits);  // "texture_fetch|framebuffer"
 
@@ -120,7 +121,13 @@ std::string to_json(const CompiledPlan& plan);
 // The bytes `pass` reads and writes: every binding's physical resource once at its full size
 // (read if the slot reads, written if it writes; a depth attachment the pass writes is also
 // read, by the depth test). Imported resources (scene geometry, camera, light) count nothing.
-PassTraffic pass_traffic(const CompiledPlan& plan, const PlannedPass& pass);
+// A pass that dispatches over a tile list, measured to have run `tile_fraction` of the list's
+// capacity (bench reads the count back), moves that share of each screen-sized texture and of
+// the list; everything else whole. The plan itself counts every tile (fraction 1).
+PassTraffic pass_traffic(const CompiledPlan& plan, const PlannedPass& pass, double tile_fraction = 1.0);
+
+// The tile list `pass` dispatches over (Usage::indirect_dispatch), or nullptr.
+const PlannedBinding* dispatch_tile_list(const PlannedPass& pass);
 
 // `penumbra graph --traffic`: pass, read MB, written MB, bytes per screen pixel; totals for the
 // technique's passes and for the whole frame. MB = 10^6 bytes.

@@ -13,7 +13,8 @@ std::string barrier_bits_to_string(std::uint32_t bits) {
       {barrier_shader_image_access, "shader_image_access"},
       {barrier_framebuffer, "framebuffer"},
       {barrier_storage_buffer, "storage_buffer"},
-      {barrier_texture_update, "texture_update"}};
+      {barrier_texture_update, "texture_update"},
+      {barrier_command, "command"}};
   std::string out;
   for (auto [bit, name] : kNames)
     if (bits & bit) out += (out.empty() ? "" : "|") + std::string(name);

@@ -47,10 +47,24 @@ bool parse_int(std::string_view s, int& out) {
 }  // namespace
 
 const char* format_name(Format format) { return kFormats[static_cast<int>(format)].name; }
+bool valid_tile_size(int pixels) {
+  return pixels >= kMinTileSize && pixels <= kMaxTileSize && (pixels & (pixels - 1)) == 0;
+}
+
+std::uint64_t tile_list_bytes(int tiles_x, int tiles_y) {
+  return kTileListHeaderBytes + kTileListEntryBytes * static_cast<std::uint64_t>(tiles_x) * static_cast<std::uint64_t>(tiles_y);
+}
+
 int bytes_per_texel(Format format) { return kFormats[static_cast<int>(format)].bytes; }
 int channel_count(Format format) { return kFormats[static_cast<int>(format)].channels; }
 bool is_depth_format(Format format) { return format == Format::DEPTH32F; }
 const char* image_format_qualifier(Format format) { return kFormats[static_cast<int>(format)].image_qualifier; }
+
+std::string format_names() {
+  std::string out;
+  for (const auto& f : kFormats) out += (out.empty() ? "" : ", ") + std::string(f.name);
+  return out;
+}
 
 std::optional<Format> parse_format(std::string_view name) {
   for (const auto& f : kFormats)

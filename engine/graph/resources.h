@@ -19,6 +19,7 @@ inline constexpr int kFormatCount = 15;
 
 const char* format_name(Format format);
 std::optional<Format> parse_format(std::string_view name);
+std::string format_names();  // "R8, R16F, ...": every format, for messages
 int bytes_per_texel(Format format);
 int channel_count(Format format);
 bool is_depth_format(Format format);
@@ -28,7 +29,7 @@ const char* image_format_qualifier(Format format);
 
 // texture:    transient, compiler-owned, may share a physical texture with another resource
 //             of the identical descriptor whose lifetime does not overlap.
-// buffer:     transient storage buffer (byte size); same reuse rule.
+// buffer:     transient storage buffer, of a byte size or a tile list (below); same reuse rule.
 // imported:   provided by the executor every frame (scene, camera, light, output target).
 // persistent: history kept across frames; never shared, never culled away by reuse.
 enum class ResourceKind { texture, buffer, imported, persistent };
@@ -67,13 +68,25 @@ struct SizeExpr {
   void resolve(const CompileSettings& s, int divisor, int& w, int& h) const;
 };
 
+// A tile list is a buffer that one pass fills with the screen tiles that need work and a later
+// pass dispatches over (indirect dispatch, engine/gl/shaders/tile_list.glsl): a 16-byte header,
+// the dispatch arguments (tiles appended, 1, 1) and a reserved word, then one 4-byte tile
+// coordinate (x | y << 16) per tile of the grid. Its size expression is the tiled area over the
+// tile edge: `screen/8` is the screen in 8 x 8-pixel tiles, ceil(w / 8) x ceil(h / 8) of them.
+inline constexpr std::uint64_t kTileListHeaderBytes = 16;
+inline constexpr std::uint64_t kTileListEntryBytes = 4;
+inline constexpr int kMinTileSize = 4, kMaxTileSize = 32;  // pixels, a power of two
+bool valid_tile_size(int pixels);
+std::uint64_t tile_list_bytes(int tiles_x, int tiles_y);
+
 struct ResourceDecl {
   std::string name;
   ResourceKind kind = ResourceKind::texture;
   Format format = Format::RGBA8;  // texture, persistent
-  SizeExpr size;                  // texture, persistent
-  std::uint64_t bytes = 0;        // buffer
+  SizeExpr size;                  // texture, persistent; a tile list's tiled area / tile edge
+  std::uint64_t bytes = 0;        // buffer (not a tile list)
   std::string location;           // JSON pointer of the declaration ("" from C++)
+  bool tile_list = false;         // buffer: a tile list sized by `size`
 };
 
 }  // namespace penumbra::graph

@@ -136,6 +136,12 @@ void validate_slot_binding(CompileState& s, const PassDecl& p, const PassTypeDec
                 ", resource is " + resource_kind_name(res.kind));
     return;
   }
+  if (slot->tile_list && !res.tile_list) {
+    s.error(GraphErrorCode::format_not_accepted, where(),
+            describe(p, b.slot, b.resource) + ": slot takes a tile list, a buffer declared with \"tiles\" (e.g. "
+            "\"tiles\": \"screen/8\"); '" + res.name + "' is a buffer of " + std::to_string(res.bytes) + " bytes");
+    return;
+  }
   bool textured = res.kind == ResourceKind::texture || res.kind == ResourceKind::persistent;
   if (textured && !slot->formats.empty() &&
       std::find(slot->formats.begin(), slot->formats.end(), res.format) == slot->formats.end()) {

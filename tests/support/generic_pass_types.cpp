@@ -53,6 +53,15 @@ void register_generic_pass_types(PassTypeRegistry& registry) {
                 .params = {{.name = "tile_size", .type = ParamType::integer, .default_value = 16,
                             .min = 4, .max = 64, .unit = "pixels", .description = "Tile edge"}},
                 .description = "Lists tiles that need the penumbra filter"});
+  registry.add({.name = "tile_list_fill",
+                .slots = {{"depth", Access::read, SlotKind::texture, {F::DEPTH32F}, Usage::sampled},
+                          {"tiles", Access::write, SlotKind::buffer, {}, Usage::storage_buffer, true, true}},
+                .description = "Appends the tiles that need work to a tile list"});
+  registry.add({.name = "tiled_filter",
+                .slots = {{"depth", Access::read, SlotKind::texture, {F::DEPTH32F}, Usage::sampled},
+                          {"tiles", Access::read, SlotKind::buffer, {}, Usage::indirect_dispatch, true, true},
+                          {"mask", Access::write, SlotKind::texture, mask_formats, Usage::image_store}},
+                .description = "Runs one work group per listed tile"});
   registry.add({.name = "blur",
                 .slots = {{"input", Access::read, SlotKind::texture, mask_formats, Usage::sampled},
                           {"output", Access::write, SlotKind::texture, mask_formats, Usage::image_store}},
