@@ -170,10 +170,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
           BenchRow row{t.label, scene.name, width, height, shadow,
                        bench_passes(pass_medians(session, o.frames), session.executor().plan(), tile_fractions),
                        0.0, 0.0};
-          for (const BenchPass& p : row.passes) {
-            row.total_ms += p.ms;
-            if (!p.frame) row.technique_ms += p.ms;
-          }
+          summarise_row(row);
           report.rows.push_back(std::move(row));
           report.timing = timing_mode_note(session);
         }

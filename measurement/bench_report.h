@@ -5,7 +5,8 @@
 //             "passes":[{"name":..., "ms":..., "read_bytes":..., "written_bytes":...,
 //                        "gb_per_s":..., "percent_of_copy_peak":..., "frame":...,
 //                        "tile_fraction":... (passes over a tile list only)}],
-//             "total_ms":..., "technique_ms":...}]}
+//             "total_ms":..., "technique_ms":...,
+//             "penumbra_tile_fraction":... (techniques whose filters run over tile lists only)}]}
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -33,7 +34,13 @@ struct BenchRow {
   std::vector<BenchPass> passes;  // execution order
   double total_ms = 0.0;          // sum of the pass medians
   double technique_ms = 0.0;      // sum over the technique's own passes
+  // The share of the screen's tiles the technique's filters ran over (the classifier's penumbra
+  // tiles, passes/shadow_tiles); unset for a technique that runs over every pixel.
+  std::optional<double> penumbra_tiles;
 };
+
+// Sums the row's times and takes its tile share from its passes.
+void summarise_row(BenchRow& row);
 
 // The medians of a session's passes, each with its planned traffic; a pass over a tile list
 // with the traffic of the tiles it ran over (`tile_fractions`: pass name -> share read back).

@@ -6,6 +6,7 @@
 #include "passes/pcf_mask/pcf_mask_pass.h"
 #include "passes/pcss/pcss_passes.h"
 #include "passes/shadow_map/shadow_map_pass.h"
+#include "passes/shadow_tiles/shadow_tiles_passes.h"
 #include "passes/visualize/visualize_pass.h"
 
 namespace penumbra {
@@ -18,6 +19,8 @@ void register_shared_passes(exec::PassLibrary& library) {
   library.add(passes::pcf_mask_pass_type());
   library.add(passes::pcss_blocker_search_pass_type());
   library.add(passes::pcss_filter_pass_type());
+  library.add(passes::shadow_planes_pass_type());
+  library.add(passes::shadow_tiles_pass_type());
   library.add(passes::visualize_pass_type());
 }
 

@@ -409,8 +409,12 @@ std::string soak_script(const std::vector<TechniqueInfo>& techniques, std::uint3
       if (params.empty()) continue;
       const graph::ParamDesc& d = params[pick(static_cast<int>(params.size()))];
       std::vector<std::string> values = interesting_values(d);
-      if ((d.type == graph::ParamType::real || d.type == graph::ParamType::integer) && d.has_range())
-        values.push_back(number_text(uniform(d.min, d.max), d.type));
+      if (d.type == graph::ParamType::real && d.has_range()) values.push_back(number_text(uniform(d.min, d.max), d.type));
+      if (d.type == graph::ParamType::integer && d.has_range()) {  // a value on the parameter's grid
+        int v = graph::nearest_step_value(d, static_cast<int>(uniform(d.min, d.max)));
+        if (d.has_step() && v > d.max) v -= d.step;
+        values.push_back(std::to_string(v));
+      }
       out.push_back(set_step(d.name, values[pick(static_cast<int>(values.size()))]));
     } else if (r < 63) {
       out.push_back({{"resize", {16 + pick(max_size - 15), 16 + pick(max_size - 15)}}});

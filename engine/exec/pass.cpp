@@ -128,9 +128,8 @@ void PassContext::dispatch_tiles(const gl::ShaderProgram& p, int width, int heig
 }
 
 void PassContext::reset_tile_list(std::string_view slot) const {
-  const GLuint empty[4] = {0, 1, 1, 0};  // tiles appended (= work groups in x), 1, 1, reserved
   gl::Buffer& list = buffer(slot);
-  glNamedBufferSubData(list.id(), 0, sizeof empty, empty);
+  glNamedBufferSubData(list.id(), 0, sizeof graph::kEmptyTileListHeader, graph::kEmptyTileListHeader);
 }
 
 void PassContext::bind_tile_list(GLuint binding, std::string_view slot) const {

@@ -56,9 +56,9 @@ class PassDeclBuilder {
     return *this;
   }
   // A tile list an earlier pass filled: this pass runs one work group per tile in it.
-  PassDeclBuilder& tile_list_in(std::string slot) {
+  PassDeclBuilder& tile_list_in(std::string slot, bool required = true) {
     decl_.slots.push_back({std::move(slot), graph::Access::read, graph::SlotKind::buffer, {},
-                           graph::Usage::indirect_dispatch, true, true});
+                           graph::Usage::indirect_dispatch, required, true});
     return *this;
   }
   // scene, camera, light: provided by the executor through FrameInputs.

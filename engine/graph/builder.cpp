@@ -97,6 +97,12 @@ BufferHandle GraphBuilder::tile_list(const std::string& name, SizeExpr tiles) {
   return {add_resource(std::move(r)), -1};
 }
 
+TextureHandle GraphBuilder::tile_texture(const std::string& name, Format format, SizeExpr tiles) {
+  ResourceDecl r{name, ResourceKind::texture, format, std::move(tiles), 0, ""};
+  r.per_tile = true;
+  return {add_resource(std::move(r)), -1};
+}
+
 ImportedHandle GraphBuilder::import(const std::string& name) {
   return {add_resource({name, ResourceKind::imported, Format::R8, {}, 0, ""})};
 }

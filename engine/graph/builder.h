@@ -87,6 +87,8 @@ class GraphBuilder {
   BufferHandle buffer(const std::string& name, std::uint64_t bytes);
   // A tile list over `tiles` (SizeExpr::screen(8): the screen in 8 x 8-pixel tiles).
   BufferHandle tile_list(const std::string& name, SizeExpr tiles);
+  // A texture of one texel per tile of `tiles` (SizeExpr::screen(16): ceil(w / 16) x ceil(h / 16)).
+  TextureHandle tile_texture(const std::string& name, Format format, SizeExpr tiles);
   ImportedHandle import(const std::string& name);
   PassBuilder pass(const std::string& type, const std::string& name);
   void output(TextureHandle h);

@@ -14,6 +14,16 @@ namespace penumbra::graph {
 
 namespace json_detail {
 
+void GraphReader::parse_tiles(const Json& j, const std::string& ptr, ResourceDecl& r) {
+  std::string text;
+  if (!get_string(j, "tiles", ptr, text, true)) return;
+  std::optional<SizeExpr> s = SizeExpr::parse(text);
+  if (!s || s->base == SizeExpr::Base::fixed)
+    error(GraphErrorCode::wrong_json_type, ptr + "/tiles", "bad tiles \"" + shortened(text) + "\"; expected screen/N, screen/$param, shadow/N or shadow/$param, N the tile edge in pixels (a power of two in " + std::to_string(kMinTileSize) + ".." + std::to_string(kMaxTileSize) + ")");
+  else
+    r.size = *s;
+}
+
 void GraphReader::read_resource(const std::string& name, const Json& j, const std::string& ptr, GraphDesc& g) {
   ResourceDecl r;
   r.name = name;
@@ -35,20 +45,19 @@ void GraphReader::read_resource(const std::string& name, const Json& j, const st
       if (!f) error(GraphErrorCode::wrong_json_type, ptr + "/format", "unknown format \"" + shortened(text) + "\"; formats: " + format_names());
       else r.format = *f;
     }
-    if (get_string(j, "size", ptr, text, true)) {
+    if (r.kind == ResourceKind::texture && j.contains("tiles")) {
+      r.per_tile = true;
+      if (j.contains("size")) error(GraphErrorCode::wrong_json_type, ptr + "/size", "a texture of one texel per tile is sized by its \"tiles\"; \"size\" does not apply");
+      parse_tiles(j, ptr, r);
+    } else if (get_string(j, "size", ptr, text, true)) {
       std::optional<SizeExpr> s = SizeExpr::parse(text);
-      if (!s) error(GraphErrorCode::wrong_json_type, ptr + "/size", "bad size \"" + shortened(text) + "\"; expected screen, screen/N, screen/$param, shadow, shadow/N, shadow/$param (N in 1..64) or WxH (1..16384)");
+      if (!s) error(GraphErrorCode::wrong_json_type, ptr + "/size", "bad size \"" + shortened(text) + "\"; expected screen, screen/N, screen/$param, shadow, shadow/N, shadow/$param (N in 1..64), WxH (1..16384), or \"tiles\" instead of \"size\" (one texel per tile)");
       else r.size = *s;
     }
   } else if (r.kind == ResourceKind::buffer && j.contains("tiles")) {
     r.tile_list = true;
     if (j.contains("bytes")) error(GraphErrorCode::wrong_json_type, ptr + "/bytes", "a tile list's size is its \"tiles\"; \"bytes\" does not apply");
-    if (get_string(j, "tiles", ptr, text, true)) {
-      std::optional<SizeExpr> s = SizeExpr::parse(text);
-      if (!s || s->base == SizeExpr::Base::fixed)
-        error(GraphErrorCode::wrong_json_type, ptr + "/tiles", "bad tiles \"" + shortened(text) + "\"; expected screen/N, screen/$param, shadow/N or shadow/$param, N the tile edge in pixels (a power of two in " + std::to_string(kMinTileSize) + ".." + std::to_string(kMaxTileSize) + ")");
-      else r.size = *s;
-    }
+    parse_tiles(j, ptr, r);
   } else if (r.kind == ResourceKind::buffer) {
     auto it = j.find("bytes");
     // 1 GiB: far more than any shadow technique needs; a bigger number is a typo.

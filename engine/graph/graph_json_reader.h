@@ -62,6 +62,8 @@ class GraphReader {
   // graph_json.cpp
   void read_graph(const Json& root, GraphDesc& g);
   void read_resource(const std::string& name, const Json& j, const std::string& ptr, GraphDesc& g);
+  // "tiles": a tile list's or a per-tile texture's tiled area / tile edge, into r.size.
+  void parse_tiles(const Json& j, const std::string& ptr, ResourceDecl& r);
 
   // graph_json_reader.cpp
   void error(GraphErrorCode code, const std::string& pointer, std::string message);

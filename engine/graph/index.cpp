@@ -14,7 +14,7 @@ std::string where_of(const ResourceDecl& r) {
 // be a structural int parameter whose whole range is a valid divisor, so every value a user
 // can set compiles).
 int divisor_of(CompileState& s, const ResourceDecl& r) {
-  const std::string key = r.tile_list ? "/tiles" : "/size";
+  const std::string key = r.tile_list || r.per_tile ? "/tiles" : "/size";
   const std::string& name = r.size.divisor_reference;
   if (name.empty()) return r.size.divisor;
   const std::string who = "resource '" + r.name + "': " + key.substr(1) + " '" + r.size.to_string() + "'";
@@ -43,23 +43,27 @@ int divisor_of(CompileState& s, const ResourceDecl& r) {
   return s.params.get_int(name);
 }
 
-// A tile list's bytes: header + one entry per tile of the grid, the tiled area divided by the
-// tile edge rounded up (a partial tile at the border is a tile).
-std::uint64_t tile_list_size(CompileState& s, const ResourceDecl& r) {
+// The tiles of a tile list or a per-tile texture: the tiled area divided by the tile edge,
+// rounded up (a partial tile at the border is a tile). Reports an edge that is no power of two
+// in kMinTileSize..kMaxTileSize.
+void tile_grid(CompileState& s, const ResourceDecl& r, int& tiles_x, int& tiles_y) {
+  tiles_x = tiles_y = 1;
   const int edge = divisor_of(s, r);
   if (!valid_tile_size(edge)) {
     const std::string from = r.size.divisor_reference.empty() ? "" : " ('$" + r.size.divisor_reference + "')";
     s.error(r.size.divisor_reference.empty() ? GraphErrorCode::wrong_json_type : GraphErrorCode::param_out_of_range,
             where_of(r) + "/tiles",
-            "tile list '" + r.name + "': tile edge " + std::to_string(edge) + from + " must be a power of two in " +
-                std::to_string(kMinTileSize) + ".." + std::to_string(kMaxTileSize) + " pixels");
-    return tile_list_bytes(1, 1);
+            std::string(r.tile_list ? "tile list '" : "per-tile texture '") + r.name + "': tile edge " +
+                std::to_string(edge) + from + " must be a power of two in " + std::to_string(kMinTileSize) + ".." +
+                std::to_string(kMaxTileSize) + " pixels");
+    return;
   }
   int w = 0, h = 0;
   SizeExpr whole = r.size;
   whole.divisor_reference.clear();
   whole.resolve(s.settings, 1, w, h);
-  return tile_list_bytes((w + edge - 1) / edge, (h + edge - 1) / edge);
+  tiles_x = (w + edge - 1) / edge;
+  tiles_y = (h + edge - 1) / edge;
 }
 
 }  // namespace
@@ -76,10 +80,17 @@ void index_resources(CompileState& s) {
     if (!inserted)
       s.error(GraphErrorCode::duplicate_name, where_of(res[i]),
               "resource '" + res[i].name + "' is declared twice");
-    if (res[i].kind == ResourceKind::texture || res[i].kind == ResourceKind::persistent)
+    if (res[i].per_tile) {
+      tile_grid(s, res[i], s.width[i], s.height[i]);
+    } else if (res[i].kind == ResourceKind::texture || res[i].kind == ResourceKind::persistent) {
       res[i].size.resolve(s.settings, divisor_of(s, res[i]), s.width[i], s.height[i]);
-    else if (res[i].kind == ResourceKind::buffer)
-      s.bytes[i] = res[i].tile_list ? tile_list_size(s, res[i]) : res[i].bytes;
+    } else if (res[i].kind == ResourceKind::buffer && res[i].tile_list) {
+      int tiles_x = 1, tiles_y = 1;
+      tile_grid(s, res[i], tiles_x, tiles_y);
+      s.bytes[i] = tile_list_bytes(tiles_x, tiles_y);
+    } else if (res[i].kind == ResourceKind::buffer) {
+      s.bytes[i] = res[i].bytes;
+    }
   }
 }
 

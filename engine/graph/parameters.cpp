@@ -95,8 +95,14 @@ Status check_param_value(const ParamDesc& desc, const ParamValue& value) {
     std::ostringstream valid;
     if (desc.step == 2) valid << "must be " << (base % 2 != 0 ? "odd" : "even") << "; valid: ";
     else valid << "must be " << base << " + k * " << desc.step << "; valid: ";
-    valid << base << ", " << base + desc.step << ", " << base + 2 * desc.step << ", ...";
-    if (desc.has_range()) valid << ", " << nearest_step_value(desc, static_cast<int>(desc.max) - desc.step / 2);
+    // Every valid value when there are few (8, 16), else the first three and the last.
+    const long long last = desc.has_range() ? nearest_step_value(desc, static_cast<int>(desc.max) - desc.step / 2) : -1;
+    if (desc.has_range() && (last - base) / desc.step < 4) {
+      for (long long v = base; v <= last; v += desc.step) valid << (v == base ? "" : ", ") << v;
+    } else {
+      valid << base << ", " << base + desc.step << ", " << base + 2 * desc.step << ", ...";
+      if (desc.has_range()) valid << ", " << last;
+    }
     Error e = make_error("parameter '" + desc.name + "' = " + param_value_to_string(value) + " " + valid.str());
     e.where = desc.name;
     return e;

@@ -75,6 +75,8 @@ struct SizeExpr {
 // tile edge: `screen/8` is the screen in 8 x 8-pixel tiles, ceil(w / 8) x ceil(h / 8) of them.
 inline constexpr std::uint64_t kTileListHeaderBytes = 16;
 inline constexpr std::uint64_t kTileListEntryBytes = 4;
+// The header of a list with no tile yet: dispatch arguments 0 x 1 x 1, reserved word 0.
+inline constexpr std::uint32_t kEmptyTileListHeader[4] = {0, 1, 1, 0};
 inline constexpr int kMinTileSize = 4, kMaxTileSize = 32;  // pixels, a power of two
 bool valid_tile_size(int pixels);
 std::uint64_t tile_list_bytes(int tiles_x, int tiles_y);
@@ -87,6 +89,7 @@ struct ResourceDecl {
   std::uint64_t bytes = 0;        // buffer (not a tile list)
   std::string location;           // JSON pointer of the declaration ("" from C++)
   bool tile_list = false;         // buffer: a tile list sized by `size`
+  bool per_tile = false;          // texture: one texel per tile of `size` (a tiled area / tile edge, rounded up)
 };
 
 }  // namespace penumbra::graph

@@ -25,7 +25,7 @@ uniform int u_samples;                 // Vogel taps
 uniform float u_radius;                // Vogel disk radius, texels
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 p = screen_pixel();
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
   float lit = 0.0;  // a receiver facing away from the light: no taps needed
   Receiver r;

@@ -8,6 +8,7 @@
 #include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
+#include "passes/shadow_tiles/tiled_dispatch.h"
 
 namespace penumbra::passes {
 namespace {
@@ -20,7 +21,9 @@ class PcfMaskPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
     const bool box = ctx.enumeration("kernel") == "box";
-    gl::ShaderProgram& p = ctx.program({.compute = kShader, .defines = {{"PCF_KERNEL_BOX", box ? "1" : "0"}}});
+    if (Status filled = fill_constant_tiles(ctx, {{"mask", glm::vec4(1.0f), glm::vec4(0.0f)}}); !filled) return filled;
+    gl::ShaderProgram& p =
+        ctx.program({.compute = kShader, .defines = tile_defines(ctx, {{"PCF_KERNEL_BOX", box ? "1" : "0"}})});
     if (!p.valid()) return *p.last_error();
     if (!compare_) compare_.emplace(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp, true);
     ctx.bind_sampled(p, "u_depth", "depth");
@@ -34,7 +37,7 @@ class PcfMaskPass final : public exec::PassImpl {
     prog.set("u_samples", ctx.integer("samples"));
     prog.set("u_radius", ctx.real("radius"));
     gl::Texture& mask = ctx.texture("mask");
-    ctx.dispatch_over(p, mask.width(), mask.height());
+    dispatch_screen(ctx, p, mask.width(), mask.height());
     return {};
   }
 
@@ -45,8 +48,10 @@ class PcfMaskPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType pcf_mask_pass_type() {
-  return shadow_receiver_pass("pcf_mask", "Percentage-closer filtering with a box or rotated Vogel-disk kernel (compute)")
-      .image_out("mask", {Format::R16F})
+  exec::PassDeclBuilder b =
+      shadow_receiver_pass("pcf_mask", "Percentage-closer filtering with a box or rotated Vogel-disk kernel (compute)");
+  add_tile_slots(b);
+  return b.image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "mask"})
       .enumeration("kernel", "box", {"box", "vogel"},
                    "box: N x N taps one texel apart; vogel: Vogel disk rotated per pixel by interleaved gradient noise")

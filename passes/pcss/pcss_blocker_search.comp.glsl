@@ -29,7 +29,7 @@ uniform float u_light_size_scale; // multiplies the light's size (unitless; widt
 uniform float u_max_search_uv;    // clamp of the search width, shadow-map UV
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 p = screen_pixel();
   if (any(greaterThanEqual(p, imageSize(u_blocker)))) return;
   float mean_blocker = 0.0;
   Receiver r;

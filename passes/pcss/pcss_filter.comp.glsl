@@ -26,7 +26,7 @@ uniform float u_light_size_scale;
 uniform float u_max_filter_uv;         // shadow-map UV
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 p = screen_pixel();
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
   float lit = 1.0;
   float d_b = texelFetch(u_blocker, p, 0).r;

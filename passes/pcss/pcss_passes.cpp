@@ -6,6 +6,7 @@
 #include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
+#include "passes/shadow_tiles/tiled_dispatch.h"
 
 namespace penumbra::passes {
 namespace {
@@ -35,7 +36,11 @@ graph::ParamDesc max_uv_param(const char* name, const char* what) {
 class BlockerSearchPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    gl::ShaderProgram& p = ctx.program({.compute = "passes/pcss/pcss_blocker_search.comp.glsl"});
+    // No blocker (0) outside the penumbra tiles: the filter never reads them there.
+    if (Status filled = fill_constant_tiles(ctx, {{"blocker", glm::vec4(0.0f), glm::vec4(0.0f)}}); !filled)
+      return filled;
+    gl::ShaderProgram& p =
+        ctx.program({.compute = "passes/pcss/pcss_blocker_search.comp.glsl", .defines = tile_defines(ctx)});
     if (!p.valid()) return *p.last_error();
     // Raw depths for textureGather: no comparison (the filter pass uses the compare sampler).
     if (!raw_) raw_.emplace(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp, false);
@@ -50,7 +55,7 @@ class BlockerSearchPass final : public exec::PassImpl {
     prog.set("u_light_size_scale", ctx.real("light_size_scale"));
     prog.set("u_max_search_uv", ctx.real("max_search_uv"));
     gl::Texture& out = ctx.texture("blocker");
-    ctx.dispatch_over(p, out.width(), out.height());
+    dispatch_screen(ctx, p, out.width(), out.height());
     return {};
   }
 
@@ -61,7 +66,8 @@ class BlockerSearchPass final : public exec::PassImpl {
 class FilterPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    gl::ShaderProgram& p = ctx.program({.compute = "passes/pcss/pcss_filter.comp.glsl"});
+    if (Status filled = fill_constant_tiles(ctx, {{"mask", glm::vec4(1.0f), glm::vec4(0.0f)}}); !filled) return filled;
+    gl::ShaderProgram& p = ctx.program({.compute = "passes/pcss/pcss_filter.comp.glsl", .defines = tile_defines(ctx)});
     if (!p.valid()) return *p.last_error();
     if (!compare_) compare_.emplace(gl::Sampler::Filter::linear, gl::Sampler::Wrap::clamp, true);
     ctx.bind_sampled(p, "u_depth", "depth");
@@ -76,7 +82,7 @@ class FilterPass final : public exec::PassImpl {
     prog.set("u_light_size_scale", ctx.real("light_size_scale"));
     prog.set("u_max_filter_uv", ctx.real("max_filter_uv"));
     gl::Texture& mask = ctx.texture("mask");
-    ctx.dispatch_over(p, mask.width(), mask.height());
+    dispatch_screen(ctx, p, mask.width(), mask.height());
     return {};
   }
 
@@ -87,9 +93,10 @@ class FilterPass final : public exec::PassImpl {
 }  // namespace
 
 exec::PassType pcss_blocker_search_pass_type() {
-  return shadow_receiver_pass("pcss_blocker_search",
-                       "PCSS blocker search: mean blocker distance (world units, 0 = none) (compute)")
-      .image_out("blocker", {Format::R32F})
+  exec::PassDeclBuilder b = shadow_receiver_pass(
+      "pcss_blocker_search", "PCSS blocker search: mean blocker distance (world units, 0 = none) (compute)");
+  add_tile_slots(b);
+  return b.image_out("blocker", {Format::R32F})
       .same_size({"depth", "normal", "blocker"})
       .param(samples_param("Blocker-search taps (each a textureGather of 4 texels), Vogel disk rotated per pixel"))
       .param(light_size_scale_param())
@@ -99,9 +106,10 @@ exec::PassType pcss_blocker_search_pass_type() {
 }
 
 exec::PassType pcss_filter_pass_type() {
-  return shadow_receiver_pass("pcss_filter",
-                       "PCSS penumbra estimate (Fernando 2005 eq. 1) and PCF of that width (compute)")
-      .sampled("blocker", {Format::R32F})
+  exec::PassDeclBuilder b = shadow_receiver_pass(
+      "pcss_filter", "PCSS penumbra estimate (Fernando 2005 eq. 1) and PCF of that width (compute)");
+  add_tile_slots(b);
+  return b.sampled("blocker", {Format::R32F})
       .image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "blocker", "mask"})
       .param(samples_param("PCF taps (bilinear hardware comparisons), Vogel disk rotated per pixel"))

@@ -29,6 +29,30 @@ const nlohmann::json* pass_named(const nlohmann::json& row, const std::string& n
 
 constexpr int kWidth = 64, kHeight = 32, kShadow = 256;
 
+// A tiled technique's row carries the share of tiles its filters ran over, which is also each
+// tiled pass's tile_fraction and shows in the table; untiled, neither appears.
+TEST(BenchCommand, ReportsTheShareOfPenumbraTilesOfATiledTechnique) {
+  const std::string json = (fresh_temp_dir("bench_tiles") / "bench.json").string();
+  CommandRun r = run_cli("bench --context osmesa --no-peaks --techniques pcss:tiles=true,pcss --scenes ball "
+                         "--size 128x96 --shadow-size 512 --frames 1 --warmup 0 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("penumbra tiles"), std::string::npos) << r.output;
+  nlohmann::json report = read_json(json);
+  ASSERT_FALSE(report.is_discarded());
+  ASSERT_EQ(report["rows"].size(), 2u);
+  const auto& tiled = report["rows"][0];
+  ASSERT_TRUE(tiled.contains("penumbra_tile_fraction")) << tiled.dump();
+  const double share = tiled["penumbra_tile_fraction"].get<double>();
+  EXPECT_GT(share, 0.0);  // the ball casts a shadow
+  EXPECT_LT(share, 1.0);  // and most of the ground is lit
+  for (const char* name : {"blocker_search", "filter"}) {
+    const nlohmann::json* p = pass_named(tiled, name);
+    ASSERT_NE(p, nullptr) << tiled.dump();
+    EXPECT_DOUBLE_EQ((*p)["tile_fraction"].get<double>(), share) << name;
+  }
+  EXPECT_FALSE(report["rows"][1].contains("penumbra_tile_fraction")) << report["rows"][1].dump();
+}
+
 TEST(BenchCommand, ReportsTrafficBandwidthAndTheMeasuredPeaks) {
   const std::string json = (fresh_temp_dir("bench_cli") / "bench.json").string();
   CommandRun r = run_cli("bench --context osmesa --techniques hard --scenes ball --size 64x32 --shadow-size 256 "

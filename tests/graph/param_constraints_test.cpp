@@ -31,6 +31,18 @@ TEST(ParamStep, OnlyValuesOnTheGridAreAccepted) {
   EXPECT_NE(p.set("box_size", 17).error().message.find("[1, 15]"), std::string::npos);
 }
 
+// A short grid is listed whole, never past its maximum (a tile edge of 8 or 16).
+TEST(ParamStep, AFewValidValuesAreAllListed) {
+  ParamDesc d = int_param("tile_size", 16, 8, 16, "pixels", "Tile edge");
+  d.step = 8;
+  ParameterSet p({d});
+  EXPECT_TRUE(p.set("tile_size", 8));
+  Status off = p.set("tile_size", 12);
+  ASSERT_FALSE(off);
+  EXPECT_NE(off.error().message.find("valid: 8, 16"), std::string::npos) << off.error().message;
+  EXPECT_EQ(off.error().message.find("24"), std::string::npos) << off.error().message;
+}
+
 TEST(ParamStep, NearestValueRoundsHalfUpFromTheMinimum) {
   ParamDesc d = odd_size();
   EXPECT_EQ(nearest_step_value(d, 4), 5);

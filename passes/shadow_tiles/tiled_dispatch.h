@@ -1,0 +1,52 @@
+#pragma once
+// What a filter pass adds to run only over the penumbra tiles of the shared classifier
+// (shadow_tiles_passes.h). Optional slots: bound, the pass fills its outputs' lit and umbra tiles
+// with their constant values and runs its own shader over the listed tiles (one work group per
+// tile: the shader includes screen_pass.glsl and takes its pixel from screen_pixel()); unbound,
+// it runs over every pixel as before. Either way each output pixel gets the same value.
+//
+//   PassDeclBuilder b = ...; add_tile_slots(b);
+//   execute(ctx):
+//     fill_constant_tiles(ctx, {{"mask", lit, umbra}});   // before the pass binds its images
+//     gl::ShaderProgram& p = ctx.program({.compute = ..., .defines = tile_defines(ctx)});
+//     ... bind ...
+//     dispatch_screen(ctx, p, width, height);
+#include <glm/vec4.hpp>
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "exec/pass.h"
+#include "exec/pass_decl_builder.h"
+
+namespace penumbra::passes {
+
+// The storage-buffer binding of the tile list in every screen pass (TILE_LIST_BINDING in
+// screen_pass.glsl).
+inline constexpr GLuint kScreenTileListBinding = 7;
+
+// Slots "tiles" (the penumbra tile list) and "tile_class" (the classifier's R8 texture), both
+// optional, and the int parameter "tile_size" (pixels: the classifier's).
+void add_tile_slots(exec::PassDeclBuilder& builder);
+
+bool tiled(const exec::PassContext& ctx);
+
+// SCREEN_TILED (0/1) and SCREEN_TILE for screen_pass.glsl, appended to `defines`.
+std::vector<std::pair<std::string, std::string>> tile_defines(
+    const exec::PassContext& ctx, std::vector<std::pair<std::string, std::string>> defines = {});
+
+// An output of the pass and what its lit and umbra tiles hold.
+struct TileFill {
+  std::string slot;
+  glm::vec4 lit, umbra;
+};
+
+// Writes each fill's values into the lit and umbra tiles of its output; nothing when untiled.
+// Checks that the classifier's texture matches the screen and tile size.
+Status fill_constant_tiles(exec::PassContext& ctx, std::initializer_list<TileFill> fills);
+
+// Every pixel of width x height (untiled), or the listed tiles.
+void dispatch_screen(exec::PassContext& ctx, const gl::ShaderProgram& p, int width, int height);
+
+}  // namespace penumbra::passes
