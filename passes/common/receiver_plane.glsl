@@ -12,6 +12,8 @@
 struct Receiver {
   vec3 coord;
   vec2 dz_duv;
+  vec3 world;   // receiver_at(): its world position and unit normal, for add_receiver_plane()
+  vec3 normal;
 };
 
 // Solves [dx.xy dy.xy] g = [dx.z dy.z] for the depth gradient g = d(window depth)/d(uv) of the
@@ -61,20 +63,32 @@ vec2 receiver_depth_gradient(sampler2D depths, ivec2 pixel, vec3 world, vec3 nor
   return plane_depth_gradient(shadow_coord(world + e * t1) - c, shadow_coord(world + e * t2) - c);
 }
 
-// False for background pixels and for pixels outside the shadow-map frustum (those are lit).
-// True for a receiver that faces away from the light (visibility 0, shadow_common.glsl).
-bool self_shadowed(sampler2D depths, sampler2D normals, ivec2 pixel) {
+// What a filter does at a pixel, decided from one read of its position and normal:
+const int RECEIVER_LIT = 0;          // background or outside the shadow-map frustum: visibility 1
+const int RECEIVER_FACES_AWAY = 1;   // normal away from the light: visibility 0 (shadow_common.glsl)
+const int RECEIVER_FILTERED = 2;     // a receiver to filter: r.coord, r.world, r.normal are set
+int receiver_at(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r) {
+  r.dz_duv = vec2(0.0);
   vec4 pos = gbuffer_position(depths, pixel);
-  return pos.w > 0.0 && faces_away_from_light(pos.xyz, gbuffer_normal(normals, pixel));
+  if (pos.w <= 0.0) return RECEIVER_LIT;
+  r.world = pos.xyz;
+  r.normal = gbuffer_normal(normals, pixel);
+  if (faces_away_from_light(r.world, r.normal)) return RECEIVER_FACES_AWAY;
+  r.coord = shadow_coord(r.world);
+  if (any(lessThan(r.coord, vec3(0.0))) || any(greaterThan(r.coord, vec3(1.0)))) return RECEIVER_LIT;
+  return RECEIVER_FILTERED;
 }
 
+// The receiver plane of a RECEIVER_FILTERED pixel (only where taps will be taken: it reads the
+// neighbours' depths).
+void add_receiver_plane(sampler2D depths, ivec2 pixel, inout Receiver r) {
+  r.dz_duv = receiver_depth_gradient(depths, pixel, r.world, r.normal, r.coord);
+}
+
+// A RECEIVER_FILTERED pixel with its plane, in one call; false for the other kinds.
 bool shadow_receiver(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r) {
-  vec4 pos = gbuffer_position(depths, pixel);
-  if (pos.w <= 0.0) return false;
-  r.coord = shadow_coord(pos.xyz);
-  if (any(lessThan(r.coord, vec3(0.0))) || any(greaterThan(r.coord, vec3(1.0)))) return false;
-  vec3 n = gbuffer_normal(normals, pixel);
-  r.dz_duv = receiver_depth_gradient(depths, pixel, pos.xyz, n, r.coord);
+  if (receiver_at(depths, normals, pixel, r) != RECEIVER_FILTERED) return false;
+  add_receiver_plane(depths, pixel, r);
   return true;
 }
 

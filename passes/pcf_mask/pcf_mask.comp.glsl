@@ -27,12 +27,11 @@ uniform float u_radius;                // Vogel disk radius, texels
 void main() {
   ivec2 p = screen_pixel();
   if (any(greaterThanEqual(p, imageSize(u_mask)))) return;
-  float lit = 0.0;  // a receiver facing away from the light: no taps needed
   Receiver r;
-  if (self_shadowed(u_depth, u_normal, p)) {
-  } else if (!shadow_receiver(u_depth, u_normal, p, r)) {
-    lit = 1.0;
-  } else {
+  int kind = receiver_at(u_depth, u_normal, p, r);
+  float lit = kind == RECEIVER_FACES_AWAY ? 0.0 : 1.0;  // no taps needed for those two kinds
+  if (kind == RECEIVER_FILTERED) {
+    add_receiver_plane(u_depth, p, r);
     vec2 size = vec2(textureSize(u_shadow_map, 0));
     float sum = 0.0;
 #if PCF_KERNEL_BOX

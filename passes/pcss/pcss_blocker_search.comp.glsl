@@ -33,7 +33,8 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_blocker)))) return;
   float mean_blocker = 0.0;
   Receiver r;
-  if (!self_shadowed(u_depth, u_normal, p) && shadow_receiver(u_depth, u_normal, p, r)) {
+  if (receiver_at(u_depth, u_normal, p, r) == RECEIVER_FILTERED) {
+    add_receiver_plane(u_depth, p, r);
     float d_r = light_distance(r.coord.z);
     float width = min(blocker_search_width_uv(d_r) * u_light_size_scale, u_max_search_uv);
     float radius = 0.5 * width;

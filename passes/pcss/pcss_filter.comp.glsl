@@ -31,9 +31,11 @@ void main() {
   float lit = 1.0;
   float d_b = texelFetch(u_blocker, p, 0).r;
   Receiver r;
-  if (self_shadowed(u_depth, u_normal, p)) {
+  int kind = receiver_at(u_depth, u_normal, p, r);
+  if (kind == RECEIVER_FACES_AWAY) {
     lit = 0.0;  // facing away from the light: no taps needed
-  } else if (d_b > 0.0 && shadow_receiver(u_depth, u_normal, p, r)) {
+  } else if (d_b > 0.0 && kind == RECEIVER_FILTERED) {
+    add_receiver_plane(u_depth, p, r);
     float d_r = light_distance(r.coord.z);
     float w_penumbra = min(penumbra_width_uv(d_r, d_b) * u_light_size_scale, u_max_filter_uv);
     float radius = 0.5 * w_penumbra;

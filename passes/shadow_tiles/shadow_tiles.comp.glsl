@@ -74,11 +74,13 @@ void main() {
   Receiver r;
   bool receiver = false;
   if (all(lessThan(p, textureSize(u_depth, 0)))) {
-    if (self_shadowed(u_depth, u_normal, p)) {
+    int kind = receiver_at(u_depth, u_normal, p, r);
+    if (kind == RECEIVER_FACES_AWAY) {
       s_all_lit = false;   // 0
-    } else if (!shadow_receiver(u_depth, u_normal, p, r)) {
+    } else if (kind == RECEIVER_LIT) {
       s_all_umbra = false;  // 1
     } else {
+      add_receiver_plane(u_depth, p, r);
       receiver = true;
       s_gradient[i] = r.dz_duv;
       atomicMin(s_first, i);
