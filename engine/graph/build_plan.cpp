@@ -34,6 +34,10 @@ void build_plan(CompileState& s) {
       if (u.read_version >= 0) b.read_version = s.versions[u.read_version].version;
       if (u.write_version >= 0) b.write_version = s.versions[u.write_version].version;
       b.physical = physical_of_version(u.write_version >= 0 ? u.write_version : u.read_version);
+      if (s.graph.resources[u.resource].tile_list) {
+        b.tiled_width = s.tiled_width[u.resource];
+        b.tiled_height = s.tiled_height[u.resource];
+      }
       p.bindings.push_back(std::move(b));
     }
     p.params.reserve(e.bound->params.size());

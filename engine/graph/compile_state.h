@@ -99,6 +99,7 @@ struct CompileState {
   std::unordered_map<std::string_view, int> resource_index;
   std::vector<int> width, height;  // resolved texture sizes per resource
   std::vector<std::uint64_t> bytes;  // resolved buffer sizes per resource (a tile list's from its grid)
+  std::vector<int> tiled_width, tiled_height;  // a tile list: the area its tiles cut, pixels
   std::unordered_map<std::string_view, ConditionState> conditions;  // by condition text
   std::vector<BoundPass> bound;    // one per declared pass, declaration order
   std::vector<ExpandedPass> passes;

@@ -46,7 +46,8 @@ int divisor_of(CompileState& s, const ResourceDecl& r) {
 // The tiles of a tile list or a per-tile texture: the tiled area divided by the tile edge,
 // rounded up (a partial tile at the border is a tile). Reports an edge that is no power of two
 // in kMinTileSize..kMaxTileSize.
-void tile_grid(CompileState& s, const ResourceDecl& r, int& tiles_x, int& tiles_y) {
+void tile_grid(CompileState& s, const ResourceDecl& r, int& tiles_x, int& tiles_y, int* area_w = nullptr,
+               int* area_h = nullptr) {
   tiles_x = tiles_y = 1;
   const int edge = divisor_of(s, r);
   if (!valid_tile_size(edge)) {
@@ -62,6 +63,8 @@ void tile_grid(CompileState& s, const ResourceDecl& r, int& tiles_x, int& tiles_
   SizeExpr whole = r.size;
   whole.divisor_reference.clear();
   whole.resolve(s.settings, 1, w, h);
+  if (area_w) *area_w = w;
+  if (area_h) *area_h = h;
   tiles_x = (w + edge - 1) / edge;
   tiles_y = (h + edge - 1) / edge;
 }
@@ -74,6 +77,8 @@ void index_resources(CompileState& s) {
   s.width.assign(res.size(), 0);
   s.height.assign(res.size(), 0);
   s.bytes.assign(res.size(), 0);
+  s.tiled_width.assign(res.size(), 0);
+  s.tiled_height.assign(res.size(), 0);
   s.version_of.assign(res.size(), {});
   for (size_t i = 0; i < res.size(); ++i) {
     auto [it, inserted] = s.resource_index.emplace(res[i].name, static_cast<int>(i));
@@ -86,7 +91,7 @@ void index_resources(CompileState& s) {
       res[i].size.resolve(s.settings, divisor_of(s, res[i]), s.width[i], s.height[i]);
     } else if (res[i].kind == ResourceKind::buffer && res[i].tile_list) {
       int tiles_x = 1, tiles_y = 1;
-      tile_grid(s, res[i], tiles_x, tiles_y);
+      tile_grid(s, res[i], tiles_x, tiles_y, &s.tiled_width[i], &s.tiled_height[i]);
       s.bytes[i] = tile_list_bytes(tiles_x, tiles_y);
     } else if (res[i].kind == ResourceKind::buffer) {
       s.bytes[i] = res[i].bytes;

@@ -61,6 +61,7 @@ struct PlannedBinding {
   int read_version = -1;   // -1 when the slot only writes
   int write_version = -1;  // -1 when the slot only reads
   int physical = -1;       // -1 for imported
+  int tiled_width = 0, tiled_height = 0;  // a tile list: the area its tiles cut, pixels
 };
 
 struct PlannedParam {

@@ -33,13 +33,15 @@ const PlannedBinding* dispatch_tile_list(const PlannedPass& pass) {
 
 PassTraffic pass_traffic(const CompiledPlan& plan, const PlannedPass& pass, double tile_fraction) {
   PassTraffic t;
-  const bool tiled = dispatch_tile_list(pass) != nullptr && tile_fraction < 1.0;
+  const PlannedBinding* list = dispatch_tile_list(pass);
+  const bool tiled = list != nullptr && tile_fraction < 1.0;
   const double share = std::clamp(tile_fraction, 0.0, 1.0);
   for (const PlannedBinding& b : pass.bindings) {
     if (b.physical < 0 || b.usage == Usage::imported) continue;
     const PhysicalResource& r = plan.physical[b.physical];
-    const bool screen_sized = r.width == plan.settings.screen_w && r.height == plan.settings.screen_h;
-    const bool scaled = tiled && (screen_sized || b.usage == Usage::indirect_dispatch);
+    // Textures of the area the list's tiles cut are touched only in the tiles dispatched.
+    const bool over_tiles = tiled && r.width == list->tiled_width && r.height == list->tiled_height;
+    const bool scaled = over_tiles || (tiled && b.usage == Usage::indirect_dispatch);
     const std::uint64_t bytes = scaled ? static_cast<std::uint64_t>(static_cast<double>(r.bytes) * share) : r.bytes;
     if (reads(b)) t.read_bytes += bytes;
     if (writes(b)) t.written_bytes += bytes;

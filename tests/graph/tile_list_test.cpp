@@ -128,6 +128,26 @@ TEST(TileList, MeasuredTrafficCountsTheShareOfTilesDispatched) {
   EXPECT_EQ(pass_traffic(*plan, classify, 0.25).total(), classify.traffic.total());
 }
 
+// A list over the shadow map (shadow/8) scales what the shadow map's area holds, not the screen's.
+TEST(TileList, MeasuredTrafficScalesTheTexturesOfTheListsOwnArea) {
+  GraphBuilder b("shadow_tiled");
+  auto scene = b.import("scene"), camera = b.import("camera");
+  auto depth = b.texture("depth", Format::DEPTH32F, SizeExpr::screen());
+  auto map = b.texture("map", Format::R16F, SizeExpr::shadow());
+  auto list = b.tile_list("map_tiles", SizeExpr::shadow(8));
+  b.pass("depth_prepass", "prepass").read("scene", scene).read("camera", camera).write("depth", depth);
+  b.pass("tile_list_fill", "classify").read("depth", depth).write("tiles", list);
+  b.pass("tiled_filter", "filter").read("depth", depth).read("tiles", list).write("mask", map);
+  b.output(map);
+  auto plan = compile_at(b.build(), {256, 128, 512});
+  ASSERT_TRUE(plan) << all_messages(plan.errors());
+  const PlannedPass& filter = plan->passes.at(static_cast<size_t>(position_of(*plan, "filter")));
+  const std::uint64_t screen_depth = 256u * 128 * 4, shadow_texels = 512u * 512 * 2, bytes = list_bytes(*plan);
+  const PassTraffic half = pass_traffic(*plan, filter, 0.5);
+  EXPECT_EQ(half.read_bytes, screen_depth + bytes / 2);  // the screen's depth is read whole
+  EXPECT_EQ(half.written_bytes, shadow_texels / 2);        // the shadow-sized output only where listed
+}
+
 TEST(TileList, JsonDeclaresItWithTiles) {
   auto graph = parse_graph_json(R"({"name": "t", "resources": {
       "list": {"kind": "buffer", "tiles": "screen/16"}}, "passes": []})");
