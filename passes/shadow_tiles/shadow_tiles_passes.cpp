@@ -34,15 +34,9 @@ class ShadowTilesPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
     const int tile = ctx.integer("tile_size");
-    const gl::Texture& classes = ctx.texture("tile_class");
+    // The class texture must cut the screen into the tiles this pass runs over.
+    if (Status grid = check_tile_grid(ctx, "depth", tile); !grid) return grid;
     const gl::Texture& depth = ctx.texture("depth");
-    // The class texture and the list must cut the screen into the tiles this pass runs over.
-    if (classes.width() != (depth.width() + tile - 1) / tile || classes.height() != (depth.height() + tile - 1) / tile)
-      return make_error("pass '" + ctx.pass().name + "': tile_class is " + std::to_string(classes.width()) + "x" +
-                        std::to_string(classes.height()) + ", but a " + std::to_string(depth.width()) + "x" +
-                        std::to_string(depth.height()) + " screen in " + std::to_string(tile) + "-pixel tiles is " +
-                        std::to_string((depth.width() + tile - 1) / tile) + "x" +
-                        std::to_string((depth.height() + tile - 1) / tile) + " (size it screen/$tile_size)");
     gl::ShaderProgram& p = ctx.program({.compute = "passes/shadow_tiles/shadow_tiles.comp.glsl",
                                         .defines = {{"SCREEN_TILE", std::to_string(tile)}}});
     if (!p.valid()) return *p.last_error();

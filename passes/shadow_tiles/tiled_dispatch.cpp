@@ -18,22 +18,27 @@ std::vector<std::pair<std::string, std::string>> tile_defines(const exec::PassCo
   return defines;
 }
 
+Status check_tile_grid(const exec::PassContext& ctx, std::string_view slot, int tile) {
+  const gl::Texture& classes = ctx.texture("tile_class");
+  const gl::Texture& out = ctx.texture(slot);
+  const int tiles_x = (out.width() + tile - 1) / tile, tiles_y = (out.height() + tile - 1) / tile;
+  if (classes.width() == tiles_x && classes.height() == tiles_y) return {};
+  return make_error("pass '" + ctx.pass().name + "': tile_class is " + std::to_string(classes.width()) + "x" +
+                    std::to_string(classes.height()) + " tiles, but '" + std::string(slot) + "' (" +
+                    std::to_string(out.width()) + "x" + std::to_string(out.height()) + ") in " + std::to_string(tile) +
+                    "-pixel tiles needs " + std::to_string(tiles_x) + "x" + std::to_string(tiles_y) +
+                    " (the classifier's tile_size, and tile_class sized \"tiles\": \"screen/$tile_size\")");
+}
+
 Status fill_constant_tiles(exec::PassContext& ctx, std::initializer_list<TileFill> fills) {
   if (!tiled(ctx)) return {};
   if (!ctx.bound("tile_class"))
     return make_error("pass '" + ctx.pass().name + "': slot 'tiles' is bound but 'tile_class' is not (bind both "
                       "to the shadow_tiles pass's outputs)");
   const int tile = ctx.integer("tile_size");
-  const gl::Texture& classes = ctx.texture("tile_class");
   for (const TileFill& fill : fills) {
+    if (Status grid = check_tile_grid(ctx, fill.slot, tile); !grid) return grid;
     const gl::Texture& out = ctx.texture(fill.slot);
-    if (classes.width() != (out.width() + tile - 1) / tile || classes.height() != (out.height() + tile - 1) / tile)
-      return make_error("pass '" + ctx.pass().name + "': tile_class is " + std::to_string(classes.width()) + "x" +
-                        std::to_string(classes.height()) + " tiles, but '" + fill.slot + "' (" +
-                        std::to_string(out.width()) + "x" + std::to_string(out.height()) + ") in " +
-                        std::to_string(tile) + "-pixel tiles needs " + std::to_string((out.width() + tile - 1) / tile) +
-                        "x" + std::to_string((out.height() + tile - 1) / tile) +
-                        " (tile_size must be the classifier's)");
     gl::ShaderProgram& p = ctx.program(
         {.compute = "passes/shadow_tiles/tile_fill.comp.glsl",
          .defines = {{"MASK_FORMAT", graph::image_format_qualifier(out.format())}, {"SCREEN_TILE", std::to_string(tile)}}});

@@ -14,6 +14,7 @@
 #include <glm/vec4.hpp>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct TileFill {
   std::string slot;
   glm::vec4 lit, umbra;
 };
+
+// Ok when `tile_class` holds one texel per tile of the texture in `slot` (tiles of `tile` pixels,
+// the last row and column partial), else an error naming both and the sizes.
+Status check_tile_grid(const exec::PassContext& ctx, std::string_view slot, int tile);
 
 // Writes each fill's values into the lit and umbra tiles of its output; nothing when untiled.
 // Checks that the classifier's texture matches the screen and tile size.
