@@ -63,31 +63,33 @@ vec2 receiver_depth_gradient(sampler2D depths, ivec2 pixel, vec3 world, vec3 nor
   return plane_depth_gradient(shadow_coord(world + e * t1) - c, shadow_coord(world + e * t2) - c);
 }
 
+bool inside_shadow_map(vec3 coord) { return all(greaterThanEqual(coord, vec3(0.0))) && all(lessThanEqual(coord, vec3(1.0))); }
+
 // What a filter does at a pixel, decided from one read of its position and normal:
 const int RECEIVER_LIT = 0;          // background or outside the shadow-map frustum: visibility 1
 const int RECEIVER_FACES_AWAY = 1;   // normal away from the light: visibility 0 (shadow_common.glsl)
-const int RECEIVER_FILTERED = 2;     // a receiver to filter: r.coord, r.world, r.normal are set
+const int RECEIVER_FILTERED = 2;     // a receiver to filter
+// r.coord, r.world and r.normal are set for the last two kinds (r.dz_duv by add_receiver_plane).
 int receiver_at(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r) {
   r.dz_duv = vec2(0.0);
   vec4 pos = gbuffer_position(depths, pixel);
   if (pos.w <= 0.0) return RECEIVER_LIT;
   r.world = pos.xyz;
   r.normal = gbuffer_normal(normals, pixel);
-  if (faces_away_from_light(r.world, r.normal)) return RECEIVER_FACES_AWAY;
   r.coord = shadow_coord(r.world);
-  if (any(lessThan(r.coord, vec3(0.0))) || any(greaterThan(r.coord, vec3(1.0)))) return RECEIVER_LIT;
-  return RECEIVER_FILTERED;
+  if (faces_away_from_light(r.world, r.normal)) return RECEIVER_FACES_AWAY;
+  return inside_shadow_map(r.coord) ? RECEIVER_FILTERED : RECEIVER_LIT;
 }
 
-// The receiver plane of a RECEIVER_FILTERED pixel (only where taps will be taken: it reads the
-// neighbours' depths).
+// The receiver plane of a receiver (only where taps will be taken: it reads the neighbours' depths).
 void add_receiver_plane(sampler2D depths, ivec2 pixel, inout Receiver r) {
   r.dz_duv = receiver_depth_gradient(depths, pixel, r.world, r.normal, r.coord);
 }
 
-// A RECEIVER_FILTERED pixel with its plane, in one call; false for the other kinds.
+// Any receiver inside the shadow-map frustum, facing the light or not, with its plane; false for
+// background and outside the frustum.
 bool shadow_receiver(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r) {
-  if (receiver_at(depths, normals, pixel, r) != RECEIVER_FILTERED) return false;
+  if (receiver_at(depths, normals, pixel, r) == RECEIVER_LIT || !inside_shadow_map(r.coord)) return false;
   add_receiver_plane(depths, pixel, r);
   return true;
 }
