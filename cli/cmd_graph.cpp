@@ -65,7 +65,8 @@ int print_pass_types(const graph::PassTypeRegistry& registry) {
         std::cout << ", ";
         for (size_t i = 0; i < slot.formats.size(); ++i) std::cout << (i ? "|" : "") << graph::format_name(slot.formats[i]);
       }
-      std::cout << (slot.required ? "" : " (optional)") << "\n";
+      std::cout << (slot.ping_pong ? ", ping-pong (writes into the texture of the version two back)" : "")
+                << (slot.required ? "" : " (optional)") << "\n";
     }
     for (const graph::ParamDesc& d : t.params) {
       std::cout << "  param " << d.name << ": " << graph::param_type_name(d.type) << " = "

@@ -94,6 +94,8 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
       s = make_error(ex.what(), ErrorKind::internal);
     }
     if (s && ctx.binding_error()) s = *ctx.binding_error();
+    over_tiles_.resize(plan_.passes.size());
+    over_tiles_[i] = ctx.dispatched_over_tiles();
     glPopDebugGroup();
     timer_.end_pass(i);
     // Leave no state behind that the next pass would inherit by accident.

@@ -53,6 +53,8 @@ class Executor {
   gl::Texture* physical_texture(int id) const;
   gl::Buffer* physical_buffer(int id) const;
   std::vector<std::string> resource_names() const;
+  // Whether the pass at `index` of the plan ran over a tile list in the last frame.
+  bool dispatched_over_tiles(size_t index) const { return index < over_tiles_.size() && over_tiles_[index]; }
 
   ExecutorOptions& options() { return options_; }
   const std::vector<PassTiming>& timings() const { return timer_.timings(); }
@@ -77,6 +79,7 @@ class Executor {
   PassTimer timer_;
   std::uint32_t frames_ = 0;
   std::optional<PassProgress> progress_;
+  std::vector<char> over_tiles_;  // by pass index, the last frame
 };
 
 GLbitfield gl_barrier_bits(std::uint32_t graph_bits);

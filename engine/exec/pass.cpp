@@ -142,6 +142,7 @@ void PassContext::dispatch_over_tiles(const gl::ShaderProgram& p, std::string_vi
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, buffer(slot).id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  dispatched_over_tiles_ = true;
 }
 
 void PassLibrary::add(PassType type) {

@@ -90,6 +90,9 @@ class PassContext {
   // Set when a dispatch was refused: an image bound to a unit whose declared format qualifier
   // differs from the texture's format (the executor reports it as the pass's error).
   const std::optional<Error>& binding_error() const { return binding_error_; }
+  // Whether this execution dispatched over a tile list (a pass with one bound may still run
+  // over every pixel, e.g. the first of a repeated pass).
+  bool dispatched_over_tiles() const { return dispatched_over_tiles_; }
 
   // A progressive pass's progress (exec/pass_progress.h); the executor keeps the last report.
   void report_progress(PassProgress progress) const {
@@ -118,6 +121,7 @@ class PassContext {
   };
   mutable std::vector<BoundImage> images_;
   mutable std::optional<Error> binding_error_;
+  mutable bool dispatched_over_tiles_ = false;
 };
 
 class PassImpl {

@@ -39,6 +39,13 @@ class PassDeclBuilder {
   PassDeclBuilder& image_out(std::string slot, std::vector<Format> formats = {}) {
     return add(std::move(slot), graph::Access::write, graph::Usage::image_store, std::move(formats), true);
   }
+  // Written with imageStore into the texture of the version two writes back (graph::SlotDecl::
+  // ping_pong): the pass may write part of the image and keep the rest.
+  PassDeclBuilder& image_out_ping_pong(std::string slot, std::vector<Format> formats = {}) {
+    image_out(std::move(slot), std::move(formats));
+    decl_.slots.back().ping_pong = true;
+    return *this;
+  }
   // Read and written in place with imageLoad/imageStore (version n in, n+1 out).
   PassDeclBuilder& image_inout(std::string slot, std::vector<Format> formats = {}) {
     return add(std::move(slot), graph::Access::read_write, graph::Usage::image_store, std::move(formats), true);

@@ -7,6 +7,10 @@ namespace penumbra::exec {
 std::optional<TileListCount> dispatched_tiles(const Executor& executor, const graph::PlannedPass& pass) {
   const graph::PlannedBinding* list = graph::dispatch_tile_list(pass);
   if (!list) return std::nullopt;
+  const auto& passes = executor.plan().passes;
+  if (&pass < passes.data() || &pass >= passes.data() + passes.size() ||
+      !executor.dispatched_over_tiles(static_cast<size_t>(&pass - passes.data())))
+    return std::nullopt;
   const gl::Buffer* buffer = executor.physical_buffer(list->physical);
   if (!buffer || buffer->size() < graph::kTileListHeaderBytes) return std::nullopt;
   unsigned header[4] = {0, 0, 0, 0};

@@ -14,7 +14,7 @@ struct TileListCount {
   double fraction() const { return capacity > 0 ? static_cast<double>(dispatched) / capacity : 0.0; }
 };
 
-// nullopt when `pass` dispatches over no tile list.
+// nullopt when `pass` (one of the executor's plan) did not dispatch over a tile list last frame.
 std::optional<TileListCount> dispatched_tiles(const Executor& executor, const graph::PlannedPass& pass);
 
 }  // namespace penumbra::exec

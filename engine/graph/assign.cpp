@@ -43,8 +43,8 @@ Descriptor descriptor_of(const CompileState& s, int resource) {
 
 }  // namespace
 
-// Group versions that must share one physical resource (in-place read_write chains; every
-// version of a persistent resource), then give each group a physical resource. A transient
+// Group versions that must share one physical resource (in-place read_write chains; ping-pong
+// writes with the version two back; every version of a persistent resource), then give each group a physical resource. A transient
 // group reuses a physical resource only when the descriptor (kind, format, resolved size,
 // bytes) is identical and its lifetime starts after the previous holder's last use: GL 4.5
 // has no memory aliasing, so whole textures are recycled. Persistent groups never share;
@@ -65,8 +65,10 @@ void assign_physical_resources(CompileState& s) {
     }
   }
   for (int pi : s.order)
-    for (const ResourceUse& u : s.passes[pi].uses)
+    for (const ResourceUse& u : s.passes[pi].uses) {
       if (u.read_version >= 0 && u.write_version >= 0) unite(u.read_version, u.write_version);
+      if (int back = ping_pong_partner(s, u); back >= 0) unite(u.write_version, back);
+    }
 
   std::vector<int> group_of_root(nv, -1);
   for (int vi = 0; vi < nv; ++vi) {

@@ -44,6 +44,11 @@ int CompileState::existing_version(int resource, int version) const {
   return version >= 0 && version < static_cast<int>(slots.size()) ? slots[version] : -1;
 }
 
+int ping_pong_partner(const CompileState& s, const ResourceUse& use) {
+  if (!use.slot->ping_pong || use.write_version < 0) return -1;
+  return s.existing_version(use.resource, s.versions[use.write_version].version - 2);
+}
+
 }  // namespace detail
 
 Checked<CompiledPlan> compile(const GraphDesc& graph, const PassTypeRegistry& registry,

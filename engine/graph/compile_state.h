@@ -119,6 +119,10 @@ struct CompileState {
   int existing_version(int resource, int version) const;
 };
 
+// The version a ping-pong write (SlotDecl::ping_pong) shares its texture with: two versions
+// before the one it writes; -1 for any other use or when there is none.
+int ping_pong_partner(const CompileState& s, const ResourceUse& use);
+
 // Where the graph declares parameter `name`, for messages: "/parameters/N" in a file, else its name.
 std::string param_location(const CompileState& s, const std::string& name);  // validate.cpp
 

@@ -10,8 +10,8 @@ namespace penumbra::graph::detail {
 // first, so the order is the declaration order whenever the dependencies allow it (what a
 // reader of the JSON expects, and "these things tend to be very annoying to debug").
 // Edges: producer -> reader of each version; and, for versions sharing one physical resource
-// (read_write in place, persistent history), reader of version n -> writer of n+1
-// (write-after-read).
+// (read_write in place, persistent history), reader of version n -> writer of n+1, and reader of
+// version n-1 -> ping-pong writer of n+1 (write-after-read).
 void order_passes(CompileState& s) {
   const int n = static_cast<int>(s.passes.size());
   std::vector<std::vector<int>> next(n);
@@ -28,8 +28,8 @@ void order_passes(CompileState& s) {
       if (u.write_version < 0) continue;
       bool shares_physical = u.slot->access == Access::read_write ||
                              s.graph.resources[u.resource].kind == ResourceKind::persistent;
-      if (!shares_physical) continue;
-      int prev = s.existing_version(u.resource, s.versions[u.write_version].version - 1);
+      int prev = shares_physical ? s.existing_version(u.resource, s.versions[u.write_version].version - 1)
+                                 : ping_pong_partner(s, u);
       if (prev >= 0)
         for (int reader : s.versions[prev].readers) edge(reader, pi);
     }

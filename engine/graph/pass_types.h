@@ -46,6 +46,12 @@ struct SlotDecl {
   Usage usage = Usage::sampled;
   bool required = true;
   bool tile_list = false;  // a buffer slot that takes only a tile list (graph/resources.h)
+  // A write whose new version n+1 lives in the physical texture of version n-1 of the same
+  // resource, the one two writes back, and finds its contents there. A repeated pass reading n
+  // and writing n+1 then alternates between two textures for certain (without it the pool may
+  // hand any free texture of the descriptor), so a pass that writes only part of the image (a
+  // tile list) leaves the rest as its iteration before last wrote it. Readers of n-1 run first.
+  bool ping_pong = false;
 };
 
 struct PassTypeDecl {

@@ -3,10 +3,14 @@
 #include "graph/resources.h"
 
 namespace penumbra::passes {
-void add_tile_slots(exec::PassDeclBuilder& builder) {
+void add_tile_list_slot(exec::PassDeclBuilder& builder) {
   builder.tile_list_in("tiles", false)
-      .sampled("tile_class", {graph::Format::R8}, false)
-      .integer("tile_size", 16, 4, 32, "pixels", "Screen tile edge of the classifier (shadow_tiles), when tiled");
+      .integer("tile_size", 16, 4, 32, "pixels", "Screen tile edge of the tile list, when tiled");
+}
+
+void add_tile_slots(exec::PassDeclBuilder& builder) {
+  add_tile_list_slot(builder);
+  builder.sampled("tile_class", {graph::Format::R8}, false);
 }
 
 bool tiled(const exec::PassContext& ctx) { return ctx.bound("tiles"); }
@@ -19,15 +23,20 @@ std::vector<std::pair<std::string, std::string>> tile_defines(const exec::PassCo
 }
 
 Status check_tile_grid(const exec::PassContext& ctx, std::string_view slot, int tile) {
-  const gl::Texture& classes = ctx.texture("tile_class");
+  return check_tile_grid(ctx, "tile_class", slot, tile);
+}
+
+Status check_tile_grid(const exec::PassContext& ctx, std::string_view per_tile, std::string_view slot, int tile) {
+  const gl::Texture& tiles = ctx.texture(per_tile);
   const gl::Texture& out = ctx.texture(slot);
   const int tiles_x = (out.width() + tile - 1) / tile, tiles_y = (out.height() + tile - 1) / tile;
-  if (classes.width() == tiles_x && classes.height() == tiles_y) return {};
-  return make_error("pass '" + ctx.pass().name + "': tile_class is " + std::to_string(classes.width()) + "x" +
-                    std::to_string(classes.height()) + " tiles, but '" + std::string(slot) + "' (" +
-                    std::to_string(out.width()) + "x" + std::to_string(out.height()) + ") in " + std::to_string(tile) +
-                    "-pixel tiles needs " + std::to_string(tiles_x) + "x" + std::to_string(tiles_y) +
-                    " (the classifier's tile_size, and tile_class sized \"tiles\": \"screen/$tile_size\")");
+  if (tiles.width() == tiles_x && tiles.height() == tiles_y) return {};
+  return make_error("pass '" + ctx.pass().name + "': '" + std::string(per_tile) + "' is " +
+                    std::to_string(tiles.width()) + "x" + std::to_string(tiles.height()) + " tiles, but '" +
+                    std::string(slot) + "' (" + std::to_string(out.width()) + "x" + std::to_string(out.height()) +
+                    ") in " + std::to_string(tile) + "-pixel tiles needs " + std::to_string(tiles_x) + "x" +
+                    std::to_string(tiles_y) + " (the pass's tile_size, and '" + std::string(per_tile) +
+                    "' sized \"tiles\": \"screen/" + std::to_string(tile) + "\")");
 }
 
 Status fill_constant_tiles(exec::PassContext& ctx, std::initializer_list<TileFill> fills) {

@@ -27,8 +27,12 @@ namespace penumbra::passes {
 // screen_pass.glsl).
 inline constexpr GLuint kScreenTileListBinding = 7;
 
-// Slots "tiles" (the penumbra tile list) and "tile_class" (the classifier's R8 texture), both
-// optional, and the int parameter "tile_size" (pixels: the classifier's).
+// The optional slot "tiles" (a tile list) and the int parameter "tile_size" (pixels: the edge of
+// the list's tiles, which is the shader's work group: SCREEN_TILE).
+void add_tile_list_slot(exec::PassDeclBuilder& builder);
+
+// add_tile_list_slot, for the classifier's penumbra tiles, and "tile_class" (its R8 texture),
+// optional too.
 void add_tile_slots(exec::PassDeclBuilder& builder);
 
 bool tiled(const exec::PassContext& ctx);
@@ -46,6 +50,8 @@ struct TileFill {
 // Ok when `tile_class` holds one texel per tile of the texture in `slot` (tiles of `tile` pixels,
 // the last row and column partial), else an error naming both and the sizes.
 Status check_tile_grid(const exec::PassContext& ctx, std::string_view slot, int tile);
+// The same for any per-tile texture: `per_tile` holds one texel per tile of `slot`.
+Status check_tile_grid(const exec::PassContext& ctx, std::string_view per_tile, std::string_view slot, int tile);
 
 // Writes each fill's values into the lit and umbra tiles of its output; nothing when untiled.
 // Checks that the classifier's texture matches the screen and tile size.

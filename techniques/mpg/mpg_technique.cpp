@@ -15,6 +15,7 @@ void register_passes(exec::PassLibrary& library) {
   library.add(dilate_pass_type());
   library.add(pcf_filter_pass_type());
   library.add(gaussian_filter_pass_type());
+  library.add(blur_tiles_pass_type());
   library.add(multipass_blur_pass_type());
   library.add(resolve_mask_pass_type());
   library.add(distance_view_pass_type());

@@ -122,6 +122,34 @@ TEST(GraphVersions, PingPongIsRenamingWithTwoPhysicalTextures) {
   EXPECT_EQ(plan->physical_for("shadow_mask"), plan->physical_for("shadow_mask", 4));
 }
 
+// A ping-pong write lands in the texture of the version two back, even where the pool would hand
+// out another free texture of the descriptor, and the readers of that version run first.
+TEST(GraphVersions, PingPongWriteSharesTheTextureOfTheVersionTwoBack) {
+  GraphBuilder b("tiled_ping_pong");
+  auto scene = b.import("scene"), camera = b.import("camera");
+  auto depth = b.texture("depth", Format::DEPTH32F, SizeExpr::screen());
+  auto mask = b.texture("mask", Format::R16F, SizeExpr::screen());
+  auto spare = b.texture("spare", Format::R16F, SizeExpr::screen());  // same descriptor as mask
+  auto late = b.texture("late_view", Format::R16F, SizeExpr::screen());
+  auto view = b.texture("view", Format::R16F, SizeExpr::screen());
+  b.pass("depth_prepass", "camera_depth").read("scene", scene).read("camera", camera).write("depth", depth);
+  b.pass("penumbra_filter", "spare_filter").read("shadow_map", depth).read("depth", depth).write("mask", spare);
+  b.pass("blur", "spare_view").read("input", spare).write("output", late);
+  b.pass("penumbra_filter", "filter").read("shadow_map", depth).read("depth", depth).write("mask", mask);
+  b.pass("tiled_blur", "blur").read("input", mask).write("output", mask).repeat(4);
+  // Declared last, reads mask@2, which blur[2] overwrites in place: it must run before blur[2].
+  b.pass("blur", "view_of_first").read("input", mask.at(2)).write("output", view);
+  b.output(mask);
+  b.output(late);
+  b.output(view);
+  auto plan = compile_graph(b.build());
+  ASSERT_TRUE(plan) << all_messages(plan.errors());
+  for (int v = 3; v <= 5; ++v) EXPECT_EQ(plan->physical_for("mask", v), plan->physical_for("mask", v - 2)) << "@" << v;
+  EXPECT_NE(plan->physical_for("mask", 1), plan->physical_for("mask", 2));
+  EXPECT_LT(position_of(*plan, "view_of_first"), position_of(*plan, "blur[2]"));
+  EXPECT_LT(position_of(*plan, "blur[1]"), position_of(*plan, "view_of_first"));
+}
+
 TEST(GraphVersions, ReadWriteStaysInOnePhysicalTexture) {
   GraphBuilder b("in_place");
   b.parameter({.name = "n", .type = ParamType::integer, .default_value = 4, .min = 1, .max = 64, .structural = true});

@@ -71,6 +71,12 @@ void register_generic_pass_types(PassTypeRegistry& registry) {
                             .min = 0.1, .max = 16.0, .unit = "texels", .description = "Gaussian sigma"}},
                 .same_size_groups = {{"input", "output"}},
                 .description = "Separable Gaussian blur (ping-pong)"});
+  registry.add({.name = "tiled_blur",
+                .slots = {{"input", Access::read, SlotKind::texture, mask_formats, Usage::sampled},
+                          {"output", Access::write, SlotKind::texture, mask_formats, Usage::image_store, true, false,
+                           true}},
+                .same_size_groups = {{"input", "output"}},
+                .description = "Blur that rewrites part of its output and keeps the rest (ping-pong)"});
   registry.add({.name = "directional_blur",
                 .slots = {{"input", Access::read, SlotKind::texture, mask_formats, Usage::sampled},
                           {"output", Access::write, SlotKind::texture, mask_formats, Usage::image_store}},

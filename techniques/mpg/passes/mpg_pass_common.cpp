@@ -4,12 +4,12 @@ namespace penumbra::mpg {
 
 using graph::Format;
 
-exec::PassDeclBuilder distance_map_filter(const char* name, const char* description) {
+exec::PassDeclBuilder distance_map_filter(const char* name, const char* description, bool keeps_unwritten) {
   exec::PassDeclBuilder b(name);
-  b.describe(description)
-      .sampled("input", {Format::RGBA16F})
-      .image_out("output", {Format::RGBA16F})
-      .same_size({"input", "output"});
+  b.describe(description).sampled("input", {Format::RGBA16F});
+  if (keeps_unwritten) b.image_out_ping_pong("output", {Format::RGBA16F});
+  else b.image_out("output", {Format::RGBA16F});
+  b.same_size({"input", "output"});
   return b;
 }
 

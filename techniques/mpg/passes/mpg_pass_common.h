@@ -16,8 +16,9 @@ inline constexpr int kMaxKernel = 63;  // pixels: largest kernel of any mpg pass
 inline constexpr int kMaxPasses = 64;  // graph::kMaxRepeat: what a pass type accepts
 
 // The input/output pair every screen-space mpg pass has: the distance map (RGBA16F) read through
-// a sampler and its next version written with imageStore (ping-pong: the graph renames).
-exec::PassDeclBuilder distance_map_filter(const char* name, const char* description);
+// a sampler and its next version written with imageStore (ping-pong: the graph renames; with
+// `keeps_unwritten`, into the texture of the version two back, graph::SlotDecl::ping_pong).
+exec::PassDeclBuilder distance_map_filter(const char* name, const char* description, bool keeps_unwritten = false);
 
 // The kernel_shape input (RGBA16F, same size as the distance map) of passes whose kernels are
 // mapped to the receiver's penumbra footprint (shaders/kernel_shape.glsl).

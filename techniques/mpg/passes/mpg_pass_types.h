@@ -20,6 +20,7 @@ exec::PassType umbra_early_out_pass_type();
 exec::PassType dilate_pass_type();
 exec::PassType pcf_filter_pass_type();
 exec::PassType gaussian_filter_pass_type();
+exec::PassType blur_tiles_pass_type();
 exec::PassType multipass_blur_pass_type();
 exec::PassType resolve_mask_pass_type();
 exec::PassType distance_view_pass_type();

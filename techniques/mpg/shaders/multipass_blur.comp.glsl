@@ -24,9 +24,19 @@ uniform sampler2D u_kernel_shape;  // (A11, A12, dz/dx, dz/dy), texelFetch
 uniform vec4 u_taps[64];           // xy: offset in pixels, z: normalised weight
 uniform int u_tap_count;
 uniform int u_kernel_size;         // KS, pixels (dense)
+#if SCREEN_TILED
+// Passes after the first, over the tiles with D > 0 (blur_tiles.comp.glsl): the output texture
+// holds what the pass before last wrote; a tile that changed on neither that pass nor the last
+// (it changes on passes 0 .. m - 1, m from u_tile_passes) already holds this pass's answer.
+uniform sampler2D u_tile_passes;
+uniform int u_iteration;
+#endif
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+#if SCREEN_TILED
+  if (float(u_iteration) > texelFetch(u_tile_passes, ivec2(tile_list_tile()), 0).r) return;
+#endif
+  ivec2 p = screen_pixel();
   ivec2 size = imageSize(u_output);
   if (any(greaterThanEqual(p, size))) return;
   vec4 centre = texelFetch(u_distance_map, p, 0);
