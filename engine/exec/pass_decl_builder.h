@@ -36,8 +36,8 @@ class PassDeclBuilder {
     return add(std::move(slot), graph::Access::read, graph::Usage::image_load, std::move(formats), true);
   }
   // Written with imageStore (incoherent: the compiler plans the barrier before the next use).
-  PassDeclBuilder& image_out(std::string slot, std::vector<Format> formats = {}) {
-    return add(std::move(slot), graph::Access::write, graph::Usage::image_store, std::move(formats), true);
+  PassDeclBuilder& image_out(std::string slot, std::vector<Format> formats = {}, bool required = true) {
+    return add(std::move(slot), graph::Access::write, graph::Usage::image_store, std::move(formats), required);
   }
   // Written with imageStore into the texture of the version two writes back (graph::SlotDecl::
   // ping_pong): the pass may write part of the image and keep the rest.

@@ -1,7 +1,8 @@
-// The multi-pass blur over the tiles with D > 0 (tiles=true, the default): passes after the first
-// run over the tile list into the texture of the version two back (a ping-pong output), so the
-// mask must be the untiled one bit for bit; the list must leave tiles out (else nothing is
-// saved) and keep every tile some pass changes (else the mask would differ).
+// mpg's tiles (tiles=true, the default), both exact: the dilation takes no taps in tiles out of
+// its reach of a tile with D > 0 (d_tiles), and blur passes after the first run over the tiles
+// with D > 0 into the texture of the version two back (a ping-pong output). The mask must be the
+// untiled one bit for bit; the list must leave tiles out (else nothing is saved) and keep every
+// tile some pass changes (else the mask would differ).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,6 +82,39 @@ TEST(MpgTiledBlur, MaskIsTheUntiledMaskOnEveryBuiltinScene) {
   }
 }
 
+// The dilation's skip (d_tiles): at 640x360 colonnade has tiles farther than the x pass's reach
+// (3 tiles at dilation_kernel 29) and the y pass's (5 tiles) from any tile with D > 0, where both
+// take no taps; the mask is still the untiled one.
+TEST(MpgTiledBlur, DilationSkipsTilesOutOfReachOfDAndKeepsTheMask) {
+  constexpr int kW = 640, kH = 360;
+  test::MpgRig rig(kW, kH, test::kShadowSize);
+  rig.set_scene(test::make_scene("colonnade"));
+  const metrics::MaskImage untiled = render(rig, {}, false);
+  const metrics::MaskImage tiled = render(rig, {}, true);
+  const metrics::MaskImage flags = rig.read("d_tiles");
+  ASSERT_EQ(flags.width, (kW + 15) / 16);
+  ASSERT_EQ(flags.height, (kH + 15) / 16);
+  auto far_from_d = [&](int tx, int ty, int reach) {
+    for (int y = std::max(0, ty - reach); y <= std::min(flags.height - 1, ty + reach); ++y)
+      for (int x = std::max(0, tx - reach); x <= std::min(flags.width - 1, tx + reach); ++x)
+        if (flags.pixels[size_t(y) * flags.width + x] > 0.0f) return false;
+    return true;
+  };
+  size_t with_d = 0, skipped_x = 0, skipped_y = 0;
+  for (int ty = 0; ty < flags.height; ++ty)
+    for (int tx = 0; tx < flags.width; ++tx) {
+      with_d += flags.pixels[size_t(ty) * flags.width + tx] > 0.0f;
+      skipped_x += far_from_d(tx, ty, 3);
+      skipped_y += far_from_d(tx, ty, 5);
+    }
+  EXPECT_GT(with_d, 0u);
+  EXPECT_GT(skipped_x, 0u);
+  EXPECT_GT(skipped_y, 0u);
+  size_t differing = 0;
+  for (size_t i = 0; i < tiled.pixels.size(); ++i) differing += tiled.pixels[i] != untiled.pixels[i];
+  EXPECT_EQ(differing, 0u) << "of " << tiled.pixels.size() << " pixels";
+}
+
 // Nothing casts a shadow: D = 0 everywhere, no tile is listed, and the mask is all lit.
 TEST(MpgTiledBlur, SceneWithoutCasterListsNoTile) {
   scene::Scene s = test::make_scene("ball");
@@ -91,4 +125,5 @@ TEST(MpgTiledBlur, SceneWithoutCasterListsNoTile) {
   const metrics::MaskImage mask = render(rig, {}, true);
   for (size_t i = 0; i < mask.pixels.size(); ++i) ASSERT_EQ(mask.pixels[i], 1.0f) << "pixel " << i;
   for (float m : rig.read("blur_tile_passes").pixels) ASSERT_EQ(m, 0.0f);
+  for (float f : rig.read("d_tiles").pixels) ASSERT_EQ(f, 0.0f);
 }

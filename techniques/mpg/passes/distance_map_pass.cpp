@@ -7,6 +7,7 @@
 
 #include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
+#include "passes/shadow_tiles/tiled_dispatch.h"
 #include "techniques/mpg/passes/mpg_pass_common.h"
 #include "techniques/mpg/passes/mpg_pass_types.h"
 
@@ -29,8 +30,13 @@ class DistanceMapPass final : public exec::PassImpl {
         {.compute = std::string(kShaderDir) + "distance_map.comp.glsl",
          .defines = {{"MAPPING", ctx.enumeration("mapping") == "physical" ? "1" : "0"},
                      {"ALTERATION", alteration_define(alteration)},
-                     {"SHADOW_TEST", ctx.enumeration("shadow_test") == "nearest" ? "0" : "1"}}});
+                     {"SHADOW_TEST", ctx.enumeration("shadow_test") == "nearest" ? "0" : "1"},
+                     {"D_TILES", ctx.bound("d_tiles") ? "1" : "0"}}});
     if (!p.valid()) return *p.last_error();
+    if (ctx.bound("d_tiles")) {
+      if (Status grid = passes::check_tile_grid(ctx, "d_tiles", "distance_map", kDTile); !grid) return grid;
+      ctx.bind_image(2, "d_tiles", GL_WRITE_ONLY);
+    }
     ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     if (!nearest_) nearest_.emplace(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
@@ -75,6 +81,7 @@ exec::PassType distance_map_pass_type() {
       "mpg pass 2: hard shadow bit S and filter control D from the occluder distance (Cherry & Kooima 3.1)");
   b.image_out("distance_map", {Format::RGBA16F})
       .image_out("kernel_shape", {Format::RGBA16F})
+      .image_out("d_tiles", {Format::R8}, false)
       .same_size({"depth", "normal", "distance_map", "kernel_shape"})
       .enumeration("shadow_test", "bilinear", {"bilinear", "nearest"},
                    "Pass 2's hard shadow S: bilinear = the 2x2 nearest texels compared and weighted bilinearly (keeps "

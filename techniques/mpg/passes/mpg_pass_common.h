@@ -14,6 +14,9 @@ namespace penumbra::mpg {
 inline constexpr const char* kShaderDir = "techniques/mpg/shaders/";
 inline constexpr int kMaxKernel = 63;  // pixels: largest kernel of any mpg pass
 inline constexpr int kMaxPasses = 64;  // graph::kMaxRepeat: what a pass type accepts
+// Edge of the tiles of "d_tiles" (shaders/d_tiles.glsl): screen_pass.glsl's work group, which
+// the writer and the readers run one of per tile.
+inline constexpr int kDTile = 16;
 
 // The input/output pair every screen-space mpg pass has: the distance map (RGBA16F) read through
 // a sampler and its next version written with imageStore (ping-pong: the graph renames; with

@@ -24,10 +24,23 @@ uniform sampler2D u_distance_map;  // texelFetch
 uniform sampler2D u_kernel_shape;  // (A11, A12, dz/dx, dz/dy), texelFetch
 uniform int u_radius;              // (K - 1) / 2 pixels
 uniform float u_kernel;            // K, pixels
+#if D_TILES
+// Tiles with D > 0 (pass 2, d_tiles.glsl). A tap lies at most u_radius * 2.5 + 1 pixels from its
+// pixel (the kernel shape stretches an axis by at most sqrt(6)): with no D > 0 within that reach
+// (AXIS 0), or within twice it (AXIS 1 reads AXIS 0's row maxima), every tap would give 0.
+uniform sampler2D u_d_tiles;
+uniform int u_tile_reach;  // tiles
+#include "d_tiles.glsl"
+#endif
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(u_output);
+#if D_TILES
+  bool near = d_tiles_near(u_tile_reach);
+#else
+  bool near = true;
+#endif
   if (any(greaterThanEqual(p, size))) return;
   vec4 centre = texelFetch(u_distance_map, p, 0);
   vec4 shape = texelFetch(u_kernel_shape, p, 0);
@@ -42,9 +55,9 @@ void main() {
   // AXIS 0's row maximum of a background pixel is a tap AXIS 1 weighs 0 when depth-aware.
   // Exact: the same D as walking every pixel.
 #if AXIS == 0
-  bool used = centre.b > 0.0 || u_depth_aware == 0;
+  bool used = near && (centre.b > 0.0 || u_depth_aware == 0);
 #else
-  bool used = centre.r == 0.0 && centre.b > 0.0;
+  bool used = near && centre.r == 0.0 && centre.b > 0.0;
 #endif
   for (int t = -u_radius; used && t <= u_radius; ++t) {
     ivec2 q = ivec2(floor(vec2(p) + 0.5 + float(t) * step));

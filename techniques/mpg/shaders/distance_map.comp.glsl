@@ -55,6 +55,11 @@ uniform int u_anisotropic;         // 1: shaped kernels (kernel_shape.glsl), 0: 
 uniform float u_max_kernel;        // pixels
 uniform int u_max_passes;
 uniform float u_pass_variance[65]; // [n]: per-axis variance (pixels^2) after n full blur passes
+#if D_TILES
+layout(r8, binding = 2) uniform writeonly image2D u_d_tiles;  // 1 where the 16 x 16 tile has D > 0
+#define D_TILES_WRITE
+#include "d_tiles.glsl"
+#endif
 
 // World-unit penumbra width across the light direction (Fernando 2005, eq. 1, scene/light.h).
 float penumbra_width_world(float d_r, float d_b) {
@@ -116,9 +121,8 @@ float filter_control(float d_r, float d_b, float pixels_per_world) {
 #endif
 }
 
-void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, imageSize(u_distance_map)))) return;
+// Writes pixel p of both maps; returns its D.
+float write_distance(ivec2 p) {
   vec4 pos = gbuffer_position(u_depth, p);
   vec4 value = vec4(0.0, 0.0, max(pos.w, 0.0), 0.0);
   KernelShape shape;
@@ -141,4 +145,17 @@ void main() {
   }
   imageStore(u_distance_map, p, value);
   imageStore(u_kernel_shape, p, vec4(shape.a.xy, shape.depth_gradient));
+  return value.g;
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  bool inside = all(lessThan(p, imageSize(u_distance_map)));
+#if D_TILES
+  d_tiles_begin();
+  if (inside) d_tiles_note(write_distance(p));
+  d_tiles_store();
+#else
+  if (inside) write_distance(p);
+#endif
 }
