@@ -82,32 +82,42 @@ TEST(MpgTiledBlur, MaskIsTheUntiledMaskOnEveryBuiltinScene) {
   }
 }
 
-// The dilation's skip (d_tiles): at 640x360 colonnade has tiles farther than the x pass's reach
-// (3 tiles at dilation_kernel 29) and the y pass's (5 tiles) from any tile with D > 0, where both
-// take no taps; the mask is still the untiled one.
+// The dilation's skip: at 640x360 colonnade has tiles farther than the x pass's reach (3 tiles at
+// dilation_kernel 29) from any tile with D > 0 (d_tiles), and farther than the y pass's from any
+// tile with a non-zero row maximum (a_tiles), where those passes take no taps; the mask is still
+// the untiled one.
 TEST(MpgTiledBlur, DilationSkipsTilesOutOfReachOfDAndKeepsTheMask) {
   constexpr int kW = 640, kH = 360;
   test::MpgRig rig(kW, kH, test::kShadowSize);
   rig.set_scene(test::make_scene("colonnade"));
   const metrics::MaskImage untiled = render(rig, {}, false);
   const metrics::MaskImage tiled = render(rig, {}, true);
-  const metrics::MaskImage flags = rig.read("d_tiles");
-  ASSERT_EQ(flags.width, (kW + 15) / 16);
-  ASSERT_EQ(flags.height, (kH + 15) / 16);
-  auto far_from_d = [&](int tx, int ty, int reach) {
-    for (int y = std::max(0, ty - reach); y <= std::min(flags.height - 1, ty + reach); ++y)
-      for (int x = std::max(0, tx - reach); x <= std::min(flags.width - 1, tx + reach); ++x)
-        if (flags.pixels[size_t(y) * flags.width + x] > 0.0f) return false;
+  const metrics::MaskImage d_marks = rig.read("d_tiles"), a_marks = rig.read("a_tiles");
+  for (const metrics::MaskImage* m : {&d_marks, &a_marks}) {
+    ASSERT_EQ(m->width, (kW + 15) / 16);
+    ASSERT_EQ(m->height, (kH + 15) / 16);
+  }
+  auto far_from = [](const metrics::MaskImage& marks, int tx, int ty, int reach) {
+    for (int y = std::max(0, ty - reach); y <= std::min(marks.height - 1, ty + reach); ++y)
+      for (int x = std::max(0, tx - reach); x <= std::min(marks.width - 1, tx + reach); ++x)
+        if (marks.pixels[size_t(y) * marks.width + x] > 0.0f) return false;
     return true;
   };
-  size_t with_d = 0, skipped_x = 0, skipped_y = 0;
-  for (int ty = 0; ty < flags.height; ++ty)
-    for (int tx = 0; tx < flags.width; ++tx) {
-      with_d += flags.pixels[size_t(ty) * flags.width + tx] > 0.0f;
-      skipped_x += far_from_d(tx, ty, 3);
-      skipped_y += far_from_d(tx, ty, 5);
+  size_t with_d = 0, with_a = 0, skipped_x = 0, skipped_y = 0;
+  for (int ty = 0; ty < d_marks.height; ++ty)
+    for (int tx = 0; tx < d_marks.width; ++tx) {
+      const size_t i = size_t(ty) * d_marks.width + tx;
+      with_d += d_marks.pixels[i] > 0.0f;
+      with_a += a_marks.pixels[i] > 0.0f;
+      // The row maxima spread D along rows: a tile with one is near a tile with D > 0.
+      if (a_marks.pixels[i] > 0.0f) {
+        EXPECT_FALSE(far_from(d_marks, tx, ty, 3)) << tx << ", " << ty;
+      }
+      skipped_x += far_from(d_marks, tx, ty, 3);
+      skipped_y += far_from(a_marks, tx, ty, 3);
     }
   EXPECT_GT(with_d, 0u);
+  EXPECT_GE(with_a, with_d);
   EXPECT_GT(skipped_x, 0u);
   EXPECT_GT(skipped_y, 0u);
   size_t differing = 0;
@@ -126,4 +136,5 @@ TEST(MpgTiledBlur, SceneWithoutCasterListsNoTile) {
   for (size_t i = 0; i < mask.pixels.size(); ++i) ASSERT_EQ(mask.pixels[i], 1.0f) << "pixel " << i;
   for (float m : rig.read("blur_tile_passes").pixels) ASSERT_EQ(m, 0.0f);
   for (float f : rig.read("d_tiles").pixels) ASSERT_EQ(f, 0.0f);
+  for (float f : rig.read("a_tiles").pixels) ASSERT_EQ(f, 0.0f);
 }

@@ -14,9 +14,11 @@ namespace {
 class DilatePass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
-    const bool skip = ctx.bound("d_tiles");
+    const bool input_marks = ctx.bound("input_marks"), output_marks = ctx.bound("output_marks");
     gl::ShaderProgram& p = ctx.program({.compute = std::string(kShaderDir) + "dilate.comp.glsl",
-                                        .defines = {axis_define(ctx), {"D_TILES", skip ? "1" : "0"}}});
+                                        .defines = {axis_define(ctx),
+                                                    {"INPUT_MARKS", input_marks ? "1" : "0"},
+                                                    {"OUTPUT_MARKS", output_marks ? "1" : "0"}}});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_distance_map", "input");
     ctx.bind_sampled(p, "u_kernel_shape", "kernel_shape");
@@ -24,13 +26,19 @@ class DilatePass final : public exec::PassImpl {
     const int kernel = ctx.integer("dilation_kernel");
     const int radius = (kernel - 1) / 2;
     p.program().set("u_radius", radius);
-    if (skip) {
-      if (Status grid = passes::check_tile_grid(ctx, "d_tiles", "output", kDTile); !grid) return grid;
-      ctx.bind_sampled(p, "u_d_tiles", "d_tiles");
-      // Farthest tap in pixels (a shaped axis stretches by at most sqrt(6) < 2.5, dilate.comp.glsl);
-      // the y pass reads the x pass's row maxima, so D reaches it from twice as far.
-      const int reach = static_cast<int>(std::ceil(2.5 * radius + 1.0)) * (ctx.enumeration("axis") == "y" ? 2 : 1);
+    if (input_marks) {
+      if (Status grid = passes::check_tile_grid(ctx, "input_marks", "output", kDTile); !grid) return grid;
+      ctx.bind_sampled(p, "u_input_marks", "input_marks");
+      // Farthest tap in pixels: a shaped axis stretches by at most sqrt(6) < 2.5 (dilate.comp.glsl).
+      const int reach = static_cast<int>(std::ceil(2.5 * radius + 1.0));
       p.program().set("u_tile_reach", (reach + kDTile - 1) / kDTile);
+    }
+    if (output_marks) {
+      if (ctx.enumeration("axis") != "x")
+        return make_error("pass '" + ctx.pass().name + "': output_marks (tiles with a non-zero row maximum) is "
+                          "written by the x pass only");
+      if (Status grid = passes::check_tile_grid(ctx, "output_marks", "output", kDTile); !grid) return grid;
+      ctx.bind_image(1, "output_marks", GL_WRITE_ONLY);
     }
     p.program().set("u_kernel", static_cast<float>(kernel));
     set_depth_aware_uniforms(p.program(), ctx);
@@ -51,7 +59,9 @@ exec::PassType dilate_pass_type() {
       .step(2);
   add_depth_aware(b);
   add_kernel_shape(b);
-  b.sampled("d_tiles", {graph::Format::R8}, false);
+  // Tile marks (shaders/tile_marks.glsl): where this pass's input channel (D for x, x's row
+  // maxima for y) may be non-zero, and, from the x pass, where its row maxima are.
+  b.sampled("input_marks", {graph::Format::R8}, false).image_out("output_marks", {graph::Format::R8}, false);
   return b.build<DilatePass>();
 }
 

@@ -24,24 +24,23 @@ uniform sampler2D u_distance_map;  // texelFetch
 uniform sampler2D u_kernel_shape;  // (A11, A12, dz/dx, dz/dy), texelFetch
 uniform int u_radius;              // (K - 1) / 2 pixels
 uniform float u_kernel;            // K, pixels
-#if D_TILES
-// Tiles with D > 0 (pass 2, d_tiles.glsl). A tap lies at most u_radius * 2.5 + 1 pixels from its
-// pixel (the kernel shape stretches an axis by at most sqrt(6)): with no D > 0 within that reach
-// (AXIS 0), or within twice it (AXIS 1 reads AXIS 0's row maxima), every tap would give 0.
-uniform sampler2D u_d_tiles;
+#if INPUT_MARKS
+// Tiles whose input channel this pass dilates may be non-zero (tile_marks.glsl): D for AXIS 0
+// (pass 2's d_tiles), the row maxima .a for AXIS 1 (AXIS 0's a_tiles). A tap lies at most
+// u_radius * 2.5 + 1 pixels from its pixel (a shaped axis stretches by at most sqrt(6)): with no
+// marked tile within that reach, every tap would give 0.
+uniform sampler2D u_input_marks;
 uniform int u_tile_reach;  // tiles
-#include "d_tiles.glsl"
+#endif
+#if OUTPUT_MARKS
+layout(r8, binding = 1) uniform writeonly image2D u_output_marks;  // tiles with a non-zero .a (AXIS 0)
+#endif
+#if INPUT_MARKS || OUTPUT_MARKS
+#include "tile_marks.glsl"
 #endif
 
-void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  ivec2 size = imageSize(u_output);
-#if D_TILES
-  bool near = d_tiles_near(u_tile_reach);
-#else
-  bool near = true;
-#endif
-  if (any(greaterThanEqual(p, size))) return;
+// Dilates pixel p and writes it; returns what it wrote.
+vec4 dilate(ivec2 p, ivec2 size, bool near) {
   vec4 centre = texelFetch(u_distance_map, p, 0);
   vec4 shape = texelFetch(u_kernel_shape, p, 0);
 #if AXIS == 0
@@ -79,4 +78,24 @@ void main() {
   centre.a = 0.0;
 #endif
   imageStore(u_output, p, centre);
+  return centre;
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(u_output);
+  bool inside = all(lessThan(p, size));
+#if INPUT_MARKS
+  bool near = tile_marks_near(u_input_marks, u_tile_reach);
+#else
+  bool near = true;
+#endif
+#if OUTPUT_MARKS
+  tile_marks_begin();
+  if (inside) tile_marks_note(dilate(p, size, near).a > 0.0);
+  bool marked = tile_marks_end();
+  if (gl_LocalInvocationIndex == 0u) imageStore(u_output_marks, ivec2(gl_WorkGroupID.xy), vec4(marked ? 1.0 : 0.0));
+#else
+  if (inside) dilate(p, size, near);
+#endif
 }

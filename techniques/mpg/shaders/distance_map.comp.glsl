@@ -57,8 +57,7 @@ uniform int u_max_passes;
 uniform float u_pass_variance[65]; // [n]: per-axis variance (pixels^2) after n full blur passes
 #if D_TILES
 layout(r8, binding = 2) uniform writeonly image2D u_d_tiles;  // 1 where the 16 x 16 tile has D > 0
-#define D_TILES_WRITE
-#include "d_tiles.glsl"
+#include "tile_marks.glsl"
 #endif
 
 // World-unit penumbra width across the light direction (Fernando 2005, eq. 1, scene/light.h).
@@ -152,9 +151,10 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   bool inside = all(lessThan(p, imageSize(u_distance_map)));
 #if D_TILES
-  d_tiles_begin();
-  if (inside) d_tiles_note(write_distance(p));
-  d_tiles_store();
+  tile_marks_begin();
+  if (inside) tile_marks_note(write_distance(p) > 0.0);
+  bool marked = tile_marks_end();
+  if (gl_LocalInvocationIndex == 0u) imageStore(u_d_tiles, ivec2(gl_WorkGroupID.xy), vec4(marked ? 1.0 : 0.0));
 #else
   if (inside) write_distance(p);
 #endif
