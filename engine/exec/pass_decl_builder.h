@@ -57,9 +57,9 @@ class PassDeclBuilder {
     return add(std::move(slot), graph::Access::write, graph::Usage::depth_attachment, {Format::DEPTH32F}, true);
   }
   // A tile list (graph/resources.h) this pass fills; a later pass dispatches over it.
-  PassDeclBuilder& tile_list_out(std::string slot) {
+  PassDeclBuilder& tile_list_out(std::string slot, bool required = true) {
     decl_.slots.push_back({std::move(slot), graph::Access::write, graph::SlotKind::buffer, {},
-                           graph::Usage::storage_buffer, true, true});
+                           graph::Usage::storage_buffer, required, true});
     return *this;
   }
   // A tile list an earlier pass filled: this pass runs one work group per tile in it.

@@ -15,10 +15,19 @@ class DilatePass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
     const bool input_marks = ctx.bound("input_marks"), output_marks = ctx.bound("output_marks");
+    const bool blur_list = ctx.bound("tiles");
+    const bool y = ctx.enumeration("axis") == "y";
+    if (output_marks && y)
+      return make_error("pass '" + ctx.pass().name + "': output_marks (tiles with a non-zero row maximum) is "
+                        "written by the x pass only");
+    if (blur_list && (!y || !ctx.bound("tile_passes")))
+      return make_error("pass '" + ctx.pass().name + "': the blur's tile list ('tiles' with 'tile_passes') is "
+                        "written by the y pass only, and needs both slots bound");
     gl::ShaderProgram& p = ctx.program({.compute = std::string(kShaderDir) + "dilate.comp.glsl",
                                         .defines = {axis_define(ctx),
                                                     {"INPUT_MARKS", input_marks ? "1" : "0"},
-                                                    {"OUTPUT_MARKS", output_marks ? "1" : "0"}}});
+                                                    {"OUTPUT_MARKS", output_marks ? "1" : "0"},
+                                                    {"BLUR_LIST", blur_list ? "1" : "0"}}});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_distance_map", "input");
     ctx.bind_sampled(p, "u_kernel_shape", "kernel_shape");
@@ -33,10 +42,13 @@ class DilatePass final : public exec::PassImpl {
       const int reach = static_cast<int>(std::ceil(2.5 * radius + 1.0));
       p.program().set("u_tile_reach", (reach + kDTile - 1) / kDTile);
     }
+    if (blur_list) {
+      if (Status grid = passes::check_tile_grid(ctx, "tile_passes", "output", kDTile); !grid) return grid;
+      ctx.bind_image(2, "tile_passes", GL_WRITE_ONLY);
+      ctx.reset_tile_list("tiles");
+      ctx.bind_tile_list(passes::kScreenTileListBinding, "tiles");
+    }
     if (output_marks) {
-      if (ctx.enumeration("axis") != "x")
-        return make_error("pass '" + ctx.pass().name + "': output_marks (tiles with a non-zero row maximum) is "
-                          "written by the x pass only");
       if (Status grid = passes::check_tile_grid(ctx, "output_marks", "output", kDTile); !grid) return grid;
       ctx.bind_image(1, "output_marks", GL_WRITE_ONLY);
     }
@@ -62,6 +74,9 @@ exec::PassType dilate_pass_type() {
   // Tile marks (shaders/tile_marks.glsl): where this pass's input channel (D for x, x's row
   // maxima for y) may be non-zero, and, from the x pass, where its row maxima are.
   b.sampled("input_marks", {graph::Format::R8}, false).image_out("output_marks", {graph::Format::R8}, false);
+  // The y pass sets D for the last time before a multi-pass blur: it may list the blur's tiles
+  // (what mpg_blur_tiles does otherwise; shaders/blur_tile_list.glsl).
+  b.tile_list_out("tiles", false).image_out("tile_passes", {graph::Format::R16F}, false);
   return b.build<DilatePass>();
 }
 

@@ -38,6 +38,11 @@ layout(r8, binding = 1) uniform writeonly image2D u_output_marks;  // tiles with
 #if INPUT_MARKS || OUTPUT_MARKS
 #include "tile_marks.glsl"
 #endif
+#if BLUR_LIST
+// AXIS 1 sets D for the last time before the multi-pass blur: it lists the blur's tiles.
+layout(r16f, binding = 2) uniform writeonly image2D u_tile_passes;
+#include "blur_tile_list.glsl"
+#endif
 
 // Dilates pixel p and writes it; returns what it wrote.
 vec4 dilate(ivec2 p, ivec2 size, bool near) {
@@ -95,6 +100,10 @@ void main() {
   if (inside) tile_marks_note(dilate(p, size, near).a > 0.0);
   bool marked = tile_marks_end();
   if (gl_LocalInvocationIndex == 0u) imageStore(u_output_marks, ivec2(gl_WorkGroupID.xy), vec4(marked ? 1.0 : 0.0));
+#elif BLUR_LIST
+  blur_list_begin();
+  if (inside) blur_list_note(dilate(p, size, near).g);
+  blur_list_end();
 #else
   if (inside) dilate(p, size, near);
 #endif
