@@ -4,6 +4,8 @@
 
 #include "mpg_rig.h"
 #include "mpg_settings.h"
+#include "techniques/builtin_techniques.h"
+#include "test_support/gl_context.h"
 
 using namespace penumbra;
 
@@ -63,4 +65,25 @@ TEST(MpgBadInput, EarlyOutNeighbourhoodSmallerThanTheKernelIsAnError) {
   EXPECT_EQ(render_error(rig), "");
   rig.set({"max_kernel=29"});  // a live change: checked again every frame
   EXPECT_NE(render_error(rig).find("must be at least max_kernel (29 pixels)"), std::string::npos);
+}
+
+// A tiled blur pass keeps the pixels outside its tiles from two passes back: that holds only
+// when it reads what the pass before it wrote. A graph that binds its input and output to two
+// resources is refused when the frame runs, naming both, instead of leaving stale pixels.
+TEST(MpgBadInput, TiledBlurBetweenTwoResourcesIsRefused) {
+  test::gl_context();
+  technique::TechniqueRegistry registry;
+  register_builtin_techniques(registry);
+  registry.add({.name = "misbound_tiled_blur", .graph_file = "tests/mpg/misbound_tiled_blur_graph.json"});
+  exec::PassLibrary library = make_pass_library(registry);
+  technique::TechniqueSession session(registry, library);
+  session.set_scene(test::make_scene("ball"));
+  ASSERT_TRUE(session.resize(test::kWidth, test::kHeight));
+  Status s = session.set_technique("misbound_tiled_blur");
+  ASSERT_TRUE(s) << s.error().to_string();
+  Status r = session.render();
+  ASSERT_FALSE(r) << "rendered";
+  const std::string m = r.error().to_string();
+  EXPECT_NE(m.find("blur[1]"), std::string::npos) << m;
+  EXPECT_NE(m.find("'distance_map' and 'blurred'"), std::string::npos) << m;
 }

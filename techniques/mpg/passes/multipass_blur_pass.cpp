@@ -8,6 +8,8 @@
 // which the graph guarantees (ping-pong output) and which outside those tiles already holds the
 // same values (pixels with D = 0 never change): the mask is the untiled one, bit for bit.
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <glad/gl.h>
@@ -18,6 +20,18 @@
 
 namespace penumbra::mpg {
 namespace {
+
+Status same_resource(const exec::PassContext& ctx, std::string_view a, std::string_view b) {
+  std::string ra, rb;
+  for (const graph::PlannedBinding& binding : ctx.pass().bindings) {
+    if (binding.slot == a) ra = binding.resource;
+    if (binding.slot == b) rb = binding.resource;
+  }
+  if (ra == rb) return {};
+  return make_error("pass '" + ctx.pass().name + "': with 'tiles' bound, '" + std::string(a) + "' and '" +
+                    std::string(b) + "' must be one resource (each pass reads what the one before wrote), not '" +
+                    ra + "' and '" + rb + "'");
+}
 
 class MultipassBlurPass final : public exec::PassImpl {
  public:
@@ -36,6 +50,9 @@ class MultipassBlurPass final : public exec::PassImpl {
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_distance_map", "input", linear_sampler(linear_));
     if (over_tiles) {
+      // Outside the listed tiles the output texture must hold this pass's input: true only when
+      // the output is the next version of the input's resource (its ping-pong partner).
+      if (Status chain = same_resource(ctx, "input", "output"); !chain) return chain;
       if (Status grid = passes::check_tile_grid(ctx, "tile_passes", "output", ctx.integer("tile_size")); !grid)
         return grid;
       ctx.bind_sampled(p, "u_tile_passes", "tile_passes");
