@@ -41,7 +41,7 @@ class MultipassBlurPass final : public exec::PassImpl {
     const bool over_tiles = passes::tiled(ctx) && iteration > 0;
     if (passes::tiled(ctx) && !ctx.bound("tile_passes"))
       return make_error("pass '" + ctx.pass().name + "': slot 'tiles' is bound but 'tile_passes' is not (bind both "
-                        "to the mpg_blur_tiles pass's outputs)");
+                        "to the tile list's writer: mpg_blur_tiles or the y pass of mpg_dilate)");
     gl::ShaderProgram& p = ctx.program(
         {.compute = std::string(kShaderDir) + "multipass_blur.comp.glsl",
          .defines = {{"DENSE", dense ? "1" : "0"},
@@ -91,8 +91,8 @@ exec::PassType multipass_blur_pass_type() {
   exec::PassDeclBuilder b = distance_map_filter(
       "mpg_multipass_blur",
       "mpg pass 4, multi-pass Gaussian: one Poisson-disk Gaussian blur of S where D > 0, then D - 1; "
-      "repeated by the graph (Cherry & Kooima 3.1); with 'tiles' and 'tile_passes' (mpg_blur_tiles) bound, "
-      "passes after the first run over the listed tiles only",
+      "repeated by the graph (Cherry & Kooima 3.1); with 'tiles' and 'tile_passes' bound (from mpg_blur_tiles or "
+      "the y pass of mpg_dilate), passes after the first run over the listed tiles only",
       true);
   passes::add_tile_list_slot(b);
   b.sampled("tile_passes", {graph::Format::R16F}, false);
