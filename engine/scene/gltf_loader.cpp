@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <functional>
 
@@ -224,8 +225,15 @@ Result<Scene> load_gltf(const std::string& path) {
   tinygltf::Model model;
   std::string err, warn;
   const bool binary = std::filesystem::path(path).extension() == ".glb";
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                         : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  } catch (const std::exception& e) {
+    // tinygltf indexes some arrays unchecked with .at(): a malformed file throws instead of
+    // returning its error (found by fuzz_gltf).
+    return file_error(path, std::string("not a valid glTF file (") + e.what() + ")");
+  }
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     if (const size_t at = err.find("File not found : "); at != std::string::npos) {
