@@ -48,6 +48,13 @@ struct Expander {
     return {};
   }
 
+  // Mesa reports some errors (undeclared identifiers, bad constructors) with source string 0
+  // whatever the #line said, so the line number alone must name the file: file k's lines are
+  // numbered from k * kLinesPerShaderFile.
+  static std::string line_directive(int index, int line) {
+    return "#line " + std::to_string(index * kLinesPerShaderFile + line) + " " + std::to_string(index) + "\n";
+  }
+
   Status expand(const std::string& path, const std::string& text, bool top, std::ostringstream& dst,
                 const std::vector<std::pair<std::string, std::string>>& defines) {
     int index = static_cast<int>(out.files.size());
@@ -59,7 +66,7 @@ struct Expander {
     bool version_seen = false;
     static const std::regex include_re(R"re(^\s*#\s*include\s*"([^"]+)"\s*(//.*)?$)re");
     static const std::regex version_re(R"re(^\s*#\s*version\b.*)re");
-    if (!top) dst << "#line 1 " << index << "\n";
+    if (!top) dst << line_directive(index, 1);
     while (std::getline(in, line)) {
       ++line_no;
       if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -68,7 +75,7 @@ struct Expander {
         version_seen = true;
         dst << line << "\n";
         for (const auto& [name, value] : defines) dst << "#define " << name << " " << value << "\n";
-        dst << "#line " << line_no + 1 << " " << index << "\n";
+        dst << line_directive(index, line_no + 1);
         continue;
       }
       if (std::regex_match(line, m, include_re)) {
@@ -101,7 +108,7 @@ struct Expander {
           }
           if (Status s = expand(resolved, *child, false, dst, defines); !s) return s;
         }
-        dst << "#line " << line_no + 1 << " " << index << "\n";
+        dst << line_directive(index, line_no + 1);
         continue;
       }
       dst << line << "\n";
@@ -137,6 +144,10 @@ Error map_compile_log(const std::string& log, const std::vector<std::string>& fi
     if (std::regex_match(line, m, loc_re)) {
       size_t idx = std::stoul(m[1]);
       int ln = m[2].matched ? std::stoi(m[2]) : std::stoi(m[4]);
+      if (ln >= kLinesPerShaderFile) {  // the line names the file (line_directive), not the driver's index
+        idx = static_cast<size_t>(ln / kLinesPerShaderFile);
+        ln %= kLinesPerShaderFile;
+      }
       int col = m[3].matched ? std::stoi(m[3]) : 0;
       std::string file = idx < files.size() ? files[idx] : "<source " + std::string(m[1]) + ">";
       std::string rest = m[5];

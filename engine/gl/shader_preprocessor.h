@@ -1,9 +1,10 @@
 #pragma once
 // Resolves #include "file" in GLSL and keeps line numbers right across files.
 //
-// Each file gets a source-string number; the output carries `#line N <number>` after every
-// include boundary, so the driver's "0:12(3): error" (Mesa) or "3(12) : error" (NVIDIA) can be
-// mapped back to "passes/blur/blur.comp.glsl:12". Includes resolve relative to the including
+// Each file gets a source-string number k; the output carries `#line k*kLinesPerShaderFile+N k`
+// after every include boundary, so the driver's "0:12(3): error" (Mesa) or "3(12) : error"
+// (NVIDIA) can be mapped back to "passes/blur/blur.comp.glsl:12" from the line alone where the
+// driver reports the wrong source string. Includes resolve relative to the including
 // file first, then through the file system's include directories (shader_files.h); a name with
 // `..` or an absolute one is an error, as it never needs to climb. A file included twice is
 // pasted once (include guards are implicit). #version stays the first line; defines follow it.
@@ -15,6 +16,9 @@
 #include "util/error.h"
 
 namespace penumbra::gl {
+
+// Lines of one file the mapping can tell apart (no shader comes near).
+inline constexpr int kLinesPerShaderFile = 100000;
 
 struct PreprocessedShader {
   std::string text;                // what is handed to glShaderSource

@@ -132,6 +132,19 @@ TEST_F(Shaders, SyntaxErrorInIncludedFileNamesThatFileAndLine) {
   EXPECT_NE(s.error().details.find("pass/helpers.glsl:3"), std::string::npos) << s.error().details;
 }
 
+// Mesa reports an undeclared identifier with source string 0 whatever #line said (the syntax
+// error above it gets right): the file must still be the included one.
+TEST_F(Shaders, UndeclaredIdentifierInIncludedFileNamesThatFileAndLine) {
+  write("pass/main.comp.glsl", main_shader("helpers.glsl"));
+  write("pass/helpers.glsl", "// line 1\nfloat value() {\n  return vec2(undeclared_thing).x;\n}\n");
+  gl::ShaderProgram p({.compute = "pass/main.comp.glsl"}, files_);
+  Status s = p.build();
+  ASSERT_FALSE(s);
+  EXPECT_EQ(s.error().file, "pass/helpers.glsl") << s.error().details;
+  EXPECT_EQ(s.error().line, 3) << s.error().details;
+  EXPECT_EQ(s.error().details.find("pass/main.comp.glsl"), std::string::npos) << s.error().details;
+}
+
 TEST_F(Shaders, SyntaxErrorAfterAnIncludeNamesTheMainFileLine) {
   write("pass/main.comp.glsl", "#version 450 core\n#include \"h.glsl\"\nlayout(local_size_x = 1) in;\n"
                                "void main() { undefined_call(); }\n");
