@@ -38,10 +38,12 @@ Status SandboxController::init(const std::string& scene, const std::string& tech
   if (Status s = load_scene(scene); !s) return s;
   std::string t = technique;
   if (t.empty()) {
-    if (registry_.names().empty())
+    const std::vector<std::string> names = registry_.names();
+    if (names.empty())
       return make_error("no techniques are registered (register_builtin_techniques added none)",
                         ErrorKind::internal);
-    t = registry_.names().front();
+    const bool has_default = std::find(names.begin(), names.end(), kStartTechnique) != names.end();
+    t = has_default ? kStartTechnique : names.front();
   }
   return set_technique(t);
 }
@@ -204,6 +206,11 @@ Status SandboxController::reset_param(const std::string& name) {
 
 Status SandboxController::save_preset(const std::string& path) const {
   return write_file_whole(path, technique::format_preset(primary_->technique(), primary_->params()));
+}
+
+std::vector<std::string> SandboxController::shipped_presets() const {
+  const technique::Technique* technique = registry_.find(primary_->technique());
+  return technique ? technique::shipped_presets(*technique) : std::vector<std::string>{};
 }
 
 Status SandboxController::load_preset(const std::string& name_or_path) {

@@ -36,12 +36,17 @@
 namespace penumbra::sandbox {
 
 
+// The first view when no technique is asked for: a contact-hardening technique as good as PCSS
+// (docs/results), so the first shadows are worth looking at; hard shadows are one click away.
+inline constexpr const char* kStartTechnique = "sspcss";
+
 class SandboxController {
  public:
   SandboxController(const technique::TechniqueRegistry& registry, const exec::PassLibrary& library);
   ~SandboxController();
 
-  // Loads the scene, selects the technique (empty: the first registered) and sizes the frame.
+  // Loads the scene, selects the technique (empty: kStartTechnique, else the first registered)
+  // and sizes the frame.
   Status init(const std::string& scene, const std::string& technique, int width, int height);
 
   // --- scene, camera, light ---------------------------------------------------------------
@@ -94,6 +99,8 @@ class SandboxController {
   Status save_preset(const std::string& path) const;
   // A preset file, or the name of one the technique ships ("paper").
   Status load_preset(const std::string& name_or_path);
+  // Names of the presets the current technique ships (technique/preset.h), sorted.
+  std::vector<std::string> shipped_presets() const;
 
   // --- graph debug switches -----------------------------------------------------------------
   Status set_no_reuse(bool on);

@@ -20,14 +20,7 @@ Status program_status(const gl::ShaderProgram& p) {
 }
 }  // namespace
 
-const char* map_name(ViewerSettings::Map map) {
-  switch (map) {
-    case ViewerSettings::Map::color: return "color";
-    case ViewerSettings::Map::grey: return "grey";
-    case ViewerSettings::Map::heat: return "heat";
-  }
-  return "?";
-}
+const char* map_name(ViewerSettings::Map map) { return kColourMapNames[static_cast<int>(map)]; }
 
 Status DisplayPass::resize(int width, int height) {
   if (target_ && target_.width() == width && target_.height() == height) return {};

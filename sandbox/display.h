@@ -19,7 +19,7 @@ namespace penumbra::sandbox {
 
 // How the resource viewer shows a texture.
 struct ViewerSettings {
-  enum class Map { color, grey, heat };
+  enum class Map { color, grey, heat, signed_error };  // display.frag.glsl's map_mode, in this order
   enum class Placement { full, inset };
   std::string resource;  // empty: viewer off
   Map map = Map::grey;

@@ -6,6 +6,7 @@
 #include "technique/frame_graph.h"
 #include "scene/light.h"
 #include "util/png.h"
+#include "util/row_order.h"
 
 namespace penumbra::sandbox {
 
@@ -33,8 +34,9 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
     if (!a || !b || !depth) return make_error("compare: shadow_mask or gbuffer_depth missing", ErrorKind::internal);
     if (Status s = display.difference(*a, *b, *depth); !s) return s;
     base.texture = &display.difference_texture();
-    base.map = ViewerSettings::Map::heat;
-    base.range = {0.0f, std::max(in.compare.error_max, 1e-4f)};
+    base.map = ViewerSettings::Map::signed_error;
+    const float scale = std::max(in.compare.error_max, 1e-4f);
+    base.range = {-scale, scale};
     base.coverage_in_g = true;
     if (Status s = display.draw(base); !s) return s;
   } else if (comparing) {
@@ -85,11 +87,7 @@ Status save_target_png(const DisplayPass& display, const std::string& path) {
   std::vector<unsigned char> bottom_up(static_cast<size_t>(t.width()) * t.height() * 4);
   glGetTextureImage(t.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottom_up.size()),
                     bottom_up.data());
-  std::vector<unsigned char> top_down(bottom_up.size());
-  const size_t row = static_cast<size_t>(t.width()) * 4;
-  for (int y = 0; y < t.height(); ++y)
-    std::copy_n(&bottom_up[(t.height() - 1 - y) * row], row, &top_down[y * row]);
-  return write_png_rgba8(path, t.width(), t.height(), top_down);
+  return write_png_rgba8(path, t.width(), t.height(), rows_flipped(bottom_up, static_cast<size_t>(t.width()) * 4, t.height()));
 }
 
 }  // namespace penumbra::sandbox

@@ -71,7 +71,7 @@ void draw_nodes_and_edges(SandboxController& c, const GraphViewCache& cache) {
         for (const std::string& r : p.outputs) tip += " " + r;
         tip += "\nclick: view " + p.outputs.front();
       }
-      ImGui::SetTooltip("%s", tip.c_str());
+      wrapped_tooltip(tip);
     }
     ImGui::PopID();
   }
@@ -81,12 +81,15 @@ void draw_nodes_and_edges(SandboxController& c, const GraphViewCache& cache) {
 }
 
 // Each pass's time as a bar; the frame budget as a vertical line.
-void draw_times(GraphViewCache& cache) {
+void draw_times(GraphViewCache& cache, UiProbe& probe) {
   const GraphViewModel& m = cache.model;
   ImGui::SetNextItemWidth(120);
   ImGui::DragFloat("frame budget", &cache.budget_ms, 0.1f, 0.1f, 1000.0f, "%.2f ms");
-  ImGui::SameLine();
-  ImGui::Text("total %.3f ms%s", m.total_ms, m.total_ms > cache.budget_ms ? "  OVER BUDGET" : "");
+  probe_item(probe, "frame budget");
+  // Its own line, numbers of fixed width: at the narrowest panel nothing is cut off.
+  if (m.total_ms > cache.budget_ms) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "total %8.3f ms  OVER BUDGET", m.total_ms);
+  else ImGui::Text("total %8.3f ms", m.total_ms);
+  probe_item(probe, "total");
   const float width = ImGui::GetContentRegionAvail().x;
   const double scale_ms = std::max<double>(cache.budget_ms * 1.1, m.total_ms);
   ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -108,7 +111,7 @@ void draw_times(GraphViewCache& cache) {
 }
 
 // The frame's total pass time over the executor's history, with its scale and the budget.
-void draw_history(SandboxController& c, const GraphViewCache& cache) {
+void draw_history(SandboxController& c, const GraphViewCache& cache, UiProbe& probe) {
   const auto& timings = c.session().executor().timings();
   size_t n = 0;
   for (const exec::PassTiming& t : timings) n = std::max(n, t.history.size());
@@ -119,7 +122,10 @@ void draw_history(SandboxController& c, const GraphViewCache& cache) {
   const float top = std::max(*std::max_element(total.begin(), total.end()), cache.budget_ms);
   char overlay[96];
   std::snprintf(overlay, sizeof overlay, "frame passes, last %zu frames: 0 .. %.2f ms (budget %.2f)", n, top, cache.budget_ms);
-  ImGui::PlotLines("##total_history", total.data(), static_cast<int>(n), 0, overlay, 0.0f, top, ImVec2(-1, 48));
+  // An explicit width: ImGui 1.86 draws ImVec2(-1, h) as a sliver here.
+  ImGui::PlotLines("##total_history", total.data(), static_cast<int>(n), 0, overlay, 0.0f, top,
+                   ImVec2(ImGui::GetContentRegionAvail().x, 48));
+  probe_item(probe, "frame history");
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
   const float y = b.y - (b.y - a.y) * (cache.budget_ms / top);
   ImGui::GetWindowDrawList()->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), IM_COL32(255, 80, 80, 160), 1.0f);
@@ -153,7 +159,7 @@ void draw_timeline(const GraphViewCache& cache, int passes) {
 
 }  // namespace
 
-void draw_graph_view(SandboxController& c, GraphViewCache& cache) {
+void draw_graph_view(SandboxController& c, GraphViewCache& cache, UiProbe& probe) {
   const std::string key = plan_key(c);
   GraphViewModel fresh = current_graph_view(c);
   if (key != cache.key) {
@@ -165,8 +171,8 @@ void draw_graph_view(SandboxController& c, GraphViewCache& cache) {
   cache.model = std::move(fresh);  // times change every frame, the layout only with the plan
   if (!cache.error.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.3f, 1), "%s", cache.error.c_str());
   else draw_nodes_and_edges(c, cache);
-  draw_times(cache);
-  draw_history(c, cache);
+  draw_times(cache, probe);
+  draw_history(c, cache, probe);
   draw_timeline(cache, static_cast<int>(c.session().plan().passes.size()));
 }
 

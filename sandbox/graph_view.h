@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sandbox/controller.h"
+#include "sandbox/ui_widgets.h"
 #include "sandbox/graph_export.h"
 #include "sandbox/graph_layout.h"
 #include "sandbox/graph_view_model.h"
@@ -21,6 +22,6 @@ struct GraphViewCache {
   float budget_ms = 16.667f;
 };
 
-void draw_graph_view(SandboxController& c, GraphViewCache& cache);
+void draw_graph_view(SandboxController& c, GraphViewCache& cache, UiProbe& probe);
 
 }  // namespace penumbra::sandbox

@@ -9,6 +9,7 @@
 
 #include "technique/frame_graph.h"
 #include "util/file_write.h"
+#include "util/row_order.h"
 
 namespace penumbra::sandbox {
 
@@ -37,7 +38,7 @@ bool screen_depth(const gl::Texture& t, const SandboxController& c) {
 Result<PixelReadout> inspect_pixel(SandboxController& c, glm::ivec2 pixel) {
   PixelReadout r;
   r.pixel = pixel;
-  const glm::ivec2 gl_pixel(pixel.x, c.height() - 1 - pixel.y);
+  const glm::ivec2 gl_pixel(pixel.x, flipped_row(pixel.y, c.height()));
   const ViewerSettings& v = c.viewer();
   const gl::Texture* tex = nullptr;
   std::optional<glm::ivec2> texel;
@@ -60,7 +61,7 @@ Result<PixelReadout> inspect_pixel(SandboxController& c, glm::ivec2 pixel) {
     r.source = "color (A)";
     if (comparing && cs.view == CompareState::View::error) {
       tex = &c.display().difference_texture();
-      r.source = "|a - b|";
+      r.source = "A - B";
     } else {
       if (comparing && pixel.x >= static_cast<int>(std::lround(cs.split * c.width()))) {
         side = c.secondary();
@@ -71,9 +72,10 @@ Result<PixelReadout> inspect_pixel(SandboxController& c, glm::ivec2 pixel) {
     if (!tex) return make_error("the frame has no image to inspect yet");
     texel = pixel_to_texel(gl_pixel, {0, 0, c.width(), c.height()}, zoomed_uv_rect(v.zoom), tex->width(), tex->height());
   }
-  r.channels = tex->info().channels;
+  // The error image's second channel is receiver coverage, not a value to show.
+  r.channels = r.source == "A - B" ? 1 : tex->info().channels;
   if (!texel) return r;
-  r.texel = texel;
+  r.texel = glm::ivec2(texel->x, flipped_row(texel->y, tex->height()));
   r.value = read_texel(*tex, *texel);
   if (screen_depth(*tex, c))
     r.linear_depth = linear_depth(r.value[0], c.camera().near_plane, c.camera().far_plane);

@@ -17,9 +17,11 @@
 namespace penumbra::sandbox {
 
 struct PixelReadout {
-  std::string source;                 // resource name, "color (A)", "color (B)" or "|a - b|"
+  std::string source;                 // resource name, "color (A)", "color (B)" or "A - B"
   glm::ivec2 pixel{0};                // frame pixel, origin top-left
-  std::optional<glm::ivec2> texel;    // GL texel (origin bottom-left); none outside the image
+  // Texel of the inspected image, origin top-left like the pixel (row 0 is the image's top row,
+  // as in a saved PNG); none outside the image.
+  std::optional<glm::ivec2> texel;
   int channels = 0;
   std::array<float, 4> value{};       // as stored
   std::optional<float> linear_depth;  // screen depth as view distance (world units)

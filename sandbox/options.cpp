@@ -10,7 +10,7 @@ namespace {
 const std::vector<cli::OptionSpec>& specs() {
   static const std::vector<cli::OptionSpec> s = cli::with_scene_options({
       {"scene", true, false, "NAME|FILE", "built-in scene or glTF file (default showcase)"},
-      {"technique", true, false, "T", "technique to start with (default: the first registered)"},
+      {"technique", true, false, "T", "technique to start with (default sspcss, a contact-hardening one)"},
       {"size", true, false, "WxH", "window / frame size in pixels (default 1280x800)"},
       {"shadow-size", true, false, "N", "shadow-map resolution in texels"},
       {"script", true, false, "FILE", "run a JSON script of steps, then exit"},
@@ -20,6 +20,10 @@ const std::vector<cli::OptionSpec>& specs() {
       {"write-exhaustive-script", true, false, "FILE",
        "write a script that visits every technique and parameter (for tests), then exit"},
       {"screenshot-dir", true, false, "DIR", "where the exhaustive script's screenshots go (default .)"},
+      {"max-fps", true, false, "N", "cap the frame rate (1..1000; default: the display's refresh)"},
+      {"state-file", true, false, "FILE",
+       "rewrite FILE every frame with the window's state as JSON: widgets, open popup, parameters "
+       "(for tests that drive the window with real input)"},
       cli::plugin_dir_option_spec(),
   });
   return s;
@@ -34,7 +38,8 @@ std::string sandbox_help() {
       "Interactive soft-shadow sandbox: swap and tune techniques live, inspect every graph\n"
       "resource, compare two techniques or a technique against the reference.\n"
       "Controls: WASD move, right mouse drag look, Shift faster, Space light = view direction,\n"
-      "F12 screenshot. Scripts: see docs/sandbox.md. Exit codes: 0 ok, 2 bad input, 1 internal.",
+      "F12 screenshot, Esc closes the open list, the full-screen resource view or the compare split.\n"
+      "Scripts: see docs/sandbox.md. Exit codes: 0 ok, 2 bad input, 1 internal.",
       specs());
 }
 
@@ -81,6 +86,12 @@ Result<SandboxOptions> parse_sandbox_options(const std::vector<std::string>& arg
   }
   if (auto v = args->get("write-exhaustive-script")) o.exhaustive_script = *v;
   if (auto v = args->get("screenshot-dir")) o.screenshot_dir = *v;
+  if (auto v = args->get("max-fps")) {
+    auto n = cli::parse_int("max-fps", *v, 1, 1000);
+    if (!n) return n.error();
+    o.max_fps = *n;
+  }
+  if (auto v = args->get("state-file")) o.state_file = *v;
   o.plugin_dirs = args->all("plugin-dir");
   return o;
 }

@@ -4,6 +4,7 @@
 //                    [--script FILE] [--screenshot OUT.png] [--context glfw|osmesa|egl]
 //                    [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]
 //                    [--write-exhaustive-script FILE [--screenshot-dir DIR]] [--plugin-dir DIR]...
+//                    [--max-fps N] [--state-file FILE]
 // The scene options are the CLI's (cli/options/scene_option.h), so a frame is staged alike.
 #include <optional>
 #include <string>
@@ -25,6 +26,8 @@ struct SandboxOptions {
   std::string exhaustive_script;  // tool mode: write the generated test script and exit
   std::string screenshot_dir = ".";
   scene::StagingOptions staging;  // --camera, --light-dir, --light-size, --ground (the initial scene)
+  int max_fps = 0;          // 0: no cap
+  std::string state_file;   // rewritten every frame (sandbox/ui_state_dump.h)
   std::vector<std::string> plugin_dirs;  // then PENUMBRA_PLUGIN_PATH; reloaded when rebuilt
   bool help = false;
 };

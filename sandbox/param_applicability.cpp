@@ -29,18 +29,17 @@ bool listed(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-}  // namespace
+// A UI condition on the current values; nullopt when it cannot be evaluated (the graph loader
+// has checked it, so only a per-frame read in a structural-only check ends up here).
+std::optional<bool> holds(const std::string& text, const graph::ParameterSet& params) {
+  Result<graph::Condition> c = graph::Condition::parse(text);
+  const auto problem = c ? c->check(params) : std::nullopt;
+  if (!c || (problem && problem->kind != graph::ConditionProblem::Kind::not_structural)) return std::nullopt;
+  return c->evaluate(params);
+}
 
-Applicability param_applicability(const graph::ParamDesc& desc, const graph::ParameterSet& params,
-                                  const graph::GraphDesc& graph, const graph::CompiledPlan& plan) {
-  if (!desc.applies.empty()) {
-    Result<graph::Condition> c = graph::Condition::parse(desc.applies);
-    // `applies` may read per-frame parameters: only a structural-only check fails for those.
-    const auto problem = c ? c->check(params) : std::nullopt;
-    const bool checked = c && (!problem || problem->kind == graph::ConditionProblem::Kind::not_structural);
-    if (checked && !c->evaluate(params))
-      return {false, "no effect unless " + desc.applies + " (now " + current_values(*c, params) + ")"};
-  }
+// Whether a pass of the plan reads the parameter, and if none does, why not.
+Applicability reads_of(const graph::ParamDesc& desc, const graph::GraphDesc& graph, const graph::CompiledPlan& plan) {
   if (desc.structural) return {};
   for (const graph::PlannedPass& p : plan.passes)
     for (const graph::PlannedParam& pp : p.params)
@@ -73,6 +72,26 @@ Applicability param_applicability(const graph::ParamDesc& desc, const graph::Par
     if (!off.empty()) why += "; disabled now: " + off;
   }
   return {false, "no effect under the current settings: " + why};
+}
+
+std::string cap_note(const graph::ParamDesc& desc, const graph::ParameterSet& params) {
+  if (!desc.capped_by || !params.get(desc.capped_by->param)) return "";
+  const graph::ParamDesc::Cap& cap = *desc.capped_by;
+  if (!cap.when.empty() && holds(cap.when, params) != true) return "";
+  return "capped by " + cap.param + " (now " + graph::param_value_to_string(*params.get(cap.param)) + "): " + cap.why;
+}
+
+}  // namespace
+
+Applicability param_applicability(const graph::ParamDesc& desc, const graph::ParameterSet& params,
+                                  const graph::GraphDesc& graph, const graph::CompiledPlan& plan) {
+  if (!desc.applies.empty() && holds(desc.applies, params) == false) {
+    const graph::Condition c = *graph::Condition::parse(desc.applies);
+    return {false, "no effect unless " + desc.applies + " (now " + current_values(c, params) + ")"};
+  }
+  Applicability a = reads_of(desc, graph, plan);
+  if (a.applies) a.capped = cap_note(desc, params);
+  return a;
 }
 
 int valid_int_value(const graph::ParamDesc& desc, int value) {

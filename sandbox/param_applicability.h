@@ -5,7 +5,8 @@
 //  - otherwise, for a parameter read per frame, whether any pass of the compiled plan reads it:
 //    one read only by passes that are disabled (their `enabled` condition), culled, or bound to
 //    it only under a `when` that does not hold has no effect.
-// Structural parameters always apply: they shape the graph.
+// Structural parameters always apply: they shape the graph. A parameter that applies may still
+// be capped by another (its `capped_by`, while its condition holds).
 //
 //   Applicability a = param_applicability(desc, session.params(), session.graph(), session.plan());
 //   if (!a.applies) { ImGui::BeginDisabled(); ... tooltip(a.reason); }
@@ -20,6 +21,9 @@ namespace penumbra::sandbox {
 struct Applicability {
   bool applies = true;
   std::string reason;  // why not, naming the condition and the current values; "" when it applies
+  // When it applies but another parameter caps its effect now (ParamDesc::capped_by): "capped by
+  // NAME (now VALUE): why"; "" otherwise.
+  std::string capped;
 };
 
 Applicability param_applicability(const graph::ParamDesc& desc, const graph::ParameterSet& params,

@@ -90,7 +90,7 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
     if (Status s = controller.session().set_shadow_size(*o.shadow_size); !s) return fail(s.error());
   if (Status s = controller.init(o.scene, o.technique, o.width, o.height); !s) return fail(s.error());
 
-  if ((*context)->window()) return run_window(**context, controller, {script, o.screenshot});
+  if ((*context)->window()) return run_window(**context, controller, {script, o.screenshot, o.max_fps, o.state_file});
 
   // Headless (osmesa/egl): the same script path without a window or UI.
   ScriptRunner runner(script.value_or(std::vector<ScriptStep>{}),

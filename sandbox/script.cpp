@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sandbox/view_mapping.h"
 #include "util/json_text.h"
 
 namespace penumbra::sandbox {
@@ -235,8 +236,8 @@ void parse_body(ScriptStep& s, const json& v) {
       if (v.contains("resource")) s.view.resource = need_string(v["resource"], "view.resource");
       if (v.contains("map")) {
         s.view.map = need_string(v["map"], "view.map");
-        if (s.view.map != "color" && s.view.map != "grey" && s.view.map != "heat")
-          problem("view.map must be \"color\", \"grey\" or \"heat\", got \"" + s.view.map + "\"");
+        if (!colour_map_index(s.view.map))
+          problem("view.map must be \"color\", \"grey\", \"heat\" or \"signed\", got \"" + s.view.map + "\"");
       }
       if (v.contains("placement")) {
         s.view.placement = need_string(v["placement"], "view.placement");

@@ -87,9 +87,7 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
     case StepKind::view: {
       if (Status s = c.view_resource(step.view.resource); !s) return s;
       ViewerSettings& v = c.viewer();
-      if (step.view.map == "color") v.map = ViewerSettings::Map::color;
-      if (step.view.map == "grey") v.map = ViewerSettings::Map::grey;
-      if (step.view.map == "heat") v.map = ViewerSettings::Map::heat;
+      if (std::optional<int> map = colour_map_index(step.view.map)) v.map = static_cast<ViewerSettings::Map>(*map);
       if (step.view.placement == "full") v.placement = ViewerSettings::Placement::full;
       if (step.view.placement == "inset") v.placement = ViewerSettings::Placement::inset;
       if (step.view.min) v.min = *step.view.min;

@@ -2,28 +2,30 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "sandbox/compare_metrics.h"
 #include "sandbox/graph_view.h"
 #include "sandbox/inspector.h"
 #include "sandbox/param_applicability.h"
+#include "sandbox/user_presets.h"
 #include "sandbox/viewport_overlay.h"
 #include "sandbox/widget_spec.h"
-#include "metrics/heat_map.h"
 #include "scene/builtin_scenes.h"
 
 namespace penumbra::sandbox {
 
 namespace {
 
-const ImVec4 kGrey(0.5f, 0.5f, 0.5f, 1.0f);
 const ImVec4 kRed(1.0f, 0.35f, 0.3f, 1.0f);
+const ImVec4 kAmber(1.0f, 0.75f, 0.3f, 1.0f);
 
-void tooltip(const std::string& text) {
-  if (!text.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
-}
+void tooltip(const std::string& text) { item_tooltip(text); }
+
 
 std::string mib(std::uint64_t bytes) {
   char buf[32];
@@ -33,26 +35,41 @@ std::string mib(std::uint64_t bytes) {
 
 // Widgets ignore returned Statuses on purpose: the controller shows every error in message().
 
-// One parameter: the widget its description asks for, then a reset button.
-// Parameters with no effect under the current settings are disabled, the reason in the tooltip.
-void parameter_widget(SandboxController& c, const graph::ParamDesc& d) {
+// One parameter: the widget its description asks for, then a reset button at the right edge.
+// The widget takes what the label and the button leave; a label too long for that goes on its
+// own line above, so neither the label nor the button is ever cut at the panel's edge.
+// Parameters with no effect under the current settings are disabled, the reason in the tooltip;
+// one capped by another says so under it.
+void parameter_widget(SandboxController& c, UiState& ui, const graph::ParamDesc& d) {
   const WidgetSpec w = widget_for(d);
   const graph::ParameterSet& params = c.session().params();
   const Applicability a = param_applicability(d, params, c.session().graph(), c.session().plan());
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float reset_w = ImGui::CalcTextSize("reset").x + 2.0f * style.FramePadding.x;
+  const float label_w = ImGui::CalcTextSize(w.label.c_str()).x;
+  float widget_w = avail - reset_w - label_w - style.ItemInnerSpacing.x - style.ItemSpacing.x;
+  std::string label = w.label;
+  if (widget_w < avail * 0.4f) {
+    ImGui::TextUnformatted(w.label.c_str());
+    label = "##" + w.label;
+    widget_w = avail - reset_w - style.ItemSpacing.x;
+  }
   ImGui::PushID(d.name.c_str());
   if (!a.applies) ImGui::BeginDisabled();
+  ImGui::SetNextItemWidth(widget_w);
   switch (w.kind) {
     case WidgetKind::checkbox: {
       bool v = params.get_bool(d.name);
-      if (ImGui::Checkbox(w.label.c_str(), &v)) (void)c.set_param_value(d.name, v);
+      if (ImGui::Checkbox(label.c_str(), &v)) (void)c.set_param_value(d.name, v);
       break;
     }
     case WidgetKind::slider_int:
     case WidgetKind::drag_int: {
       int v = params.get_int(d.name);
       bool changed = w.kind == WidgetKind::slider_int
-                         ? ImGui::SliderInt(w.label.c_str(), &v, int(w.min), int(w.max))
-                         : ImGui::DragInt(w.label.c_str(), &v, float(w.drag_speed));
+                         ? ImGui::SliderInt(label.c_str(), &v, int(w.min), int(w.max))
+                         : ImGui::DragInt(label.c_str(), &v, float(w.drag_speed));
       // Only valid values are offered: a step (odd sizes) snaps to the nearest valid one.
       v = valid_int_value(d, v);
       // Structural ones recompile on every step of a drag: compiling is CPU-cheap and the pool
@@ -64,42 +81,49 @@ void parameter_widget(SandboxController& c, const graph::ParamDesc& d) {
     case WidgetKind::drag_float: {
       float v = static_cast<float>(params.get_real(d.name));
       bool changed = w.kind == WidgetKind::slider_float
-                         ? ImGui::SliderFloat(w.label.c_str(), &v, float(w.min), float(w.max), "%.4g")
-                         : ImGui::DragFloat(w.label.c_str(), &v, float(w.drag_speed), 0.0f, 0.0f, "%.4g");
+                         ? ImGui::SliderFloat(label.c_str(), &v, float(w.min), float(w.max), "%.4g")
+                         : ImGui::DragFloat(label.c_str(), &v, float(w.drag_speed), 0.0f, 0.0f, "%.4g");
       if (changed) (void)c.set_param_value(d.name, double(v));
       break;
     }
     case WidgetKind::combo: {
       std::string current = params.get_enum(d.name);
-      if (ImGui::BeginCombo(w.label.c_str(), current.c_str())) {
+      if (begin_combo(ui.probe, d.name.c_str(), current.c_str())) {
         for (const std::string& o : w.options)
-          if (ImGui::Selectable(o.c_str(), o == current)) (void)c.set_param_value(d.name, o);
+          if (selectable(ui.probe, d.name.c_str(), o, o == current)) (void)c.set_param_value(d.name, o);
         ImGui::EndCombo();
       }
       break;
     }
   }
+  if (w.kind != WidgetKind::combo) probe_item(ui.probe, d.name);
   if (!a.applies) {
     ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-      ImGui::SetTooltip("%s\n\n%s", a.reason.c_str(), w.tooltip.c_str());
+    tooltip(a.reason + "\n\n" + w.tooltip);
   } else {
     tooltip(w.tooltip);
   }
-  ImGui::SameLine();
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowContentRegionMax().x - reset_w));
   if (ImGui::SmallButton("reset")) (void)c.reset_param(d.name);
+  probe_item(ui.probe, "reset:" + d.name);
   tooltip("back to the default " + graph::param_value_to_string(d.default_value));
+  if (!a.capped.empty()) {
+    ImGui::TextColored(kAmber, "  capped by %s", d.capped_by->param.c_str());
+    probe_item(ui.probe, "capped:" + d.name);
+    tooltip(a.capped);
+  }
   ImGui::PopID();
 }
 
 void scene_panel(SandboxController& c, UiState& ui) {
   if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (ImGui::BeginCombo("scene", c.scene_name().c_str())) {
+  if (begin_combo(ui.probe, "scene", c.scene_name().c_str())) {
     for (const std::string& n : scene::builtin_scene_names())
-      if (ImGui::Selectable(n.c_str(), n == c.scene_name())) (void)c.load_scene(n);
+      if (selectable(ui.probe, "scene", n, n == c.scene_name())) (void)c.load_scene(n);
     ImGui::EndCombo();
   }
   ImGui::InputText("glTF", ui.scene_path, sizeof ui.scene_path);
+  probe_item(ui.probe, "glTF");
   ImGui::SameLine();
   if (ImGui::Button("open")) (void)c.load_scene(ui.scene_path);
   tooltip("load a .gltf/.glb file; on failure the current scene stays");
@@ -113,13 +137,14 @@ void scene_panel(SandboxController& c, UiState& ui) {
   std::string current = choice.kind == scene::CameraChoice::Kind::scene ? "default" : "fitted to the model";
   if (choice.kind == scene::CameraChoice::Kind::file)
     current = "file: " + (choice.file_camera.empty() ? std::string("0") : choice.file_camera);
-  if (ImGui::BeginCombo("view", current.c_str())) {
-    if (ImGui::Selectable("fitted to the model", choice.kind != scene::CameraChoice::Kind::file))
+  // "camera", not "view": one ImGui ID per window, and the compare panel has a "view" combo.
+  if (begin_combo(ui.probe, "camera", current.c_str())) {
+    if (selectable(ui.probe, "camera", "fitted to the model", choice.kind != scene::CameraChoice::Kind::file))
       (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::fitted});
     for (size_t i = 0; i < cams.size(); ++i) {
       const std::string label = "file: " + std::to_string(i) + (cams[i].name.empty() ? "" : " " + cams[i].name);
-      if (ImGui::Selectable(label.c_str(), choice.kind == scene::CameraChoice::Kind::file &&
-                                               choice.file_camera == std::to_string(i)))
+      if (selectable(ui.probe, "camera", label, choice.kind == scene::CameraChoice::Kind::file &&
+                                                   choice.file_camera == std::to_string(i)))
         (void)c.set_camera_choice({.kind = scene::CameraChoice::Kind::file, .file_camera = std::to_string(i)});
     }
     ImGui::EndCombo();
@@ -131,11 +156,12 @@ void scene_panel(SandboxController& c, UiState& ui) {
                       cam.position.z, glm::degrees(cam.yaw), glm::degrees(cam.pitch));
 }
 
-void light_panel(SandboxController& c) {
+void light_panel(SandboxController& c, UiState& ui) {
   if (!ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) return;
   scene::Light& l = c.light();
   int type = static_cast<int>(l.type);  // the combo lists LightType in declaration order
-  if (ImGui::Combo("type", &type, "directional\0spot\0point\0")) c.set_light_type(static_cast<scene::LightType>(type));
+  if (combo_index(ui.probe, "type", &type, {"directional", "spot", "point"}))
+    c.set_light_type(static_cast<scene::LightType>(type));
   if (l.type == scene::LightType::point)
     tooltip("light in every direction from its position; only esm renders it inside the scene bounds "
             "(six shadow-map faces), one-map techniques need it outside them");
@@ -152,48 +178,79 @@ void light_panel(SandboxController& c) {
   }
   static const int kSizes[] = {256, 512, 1024, 2048, 4096};
   int shadow = c.session().settings().shadow_size;
-  if (ImGui::BeginCombo("shadow map", (std::to_string(shadow) + " texels").c_str())) {
+  if (begin_combo(ui.probe, "shadow map", (std::to_string(shadow) + " texels").c_str())) {
     for (int s : kSizes)
-      if (ImGui::Selectable(std::to_string(s).c_str(), s == shadow)) (void)c.set_shadow_size(s);
+      if (selectable(ui.probe, "shadow map", std::to_string(s), s == shadow)) (void)c.set_shadow_size(s);
     ImGui::EndCombo();
   }
   if (ImGui::Button("light = view direction (Space)")) (void)c.align_light_with_camera();
+  probe_item(ui.probe, "light = view direction (Space)");
+}
+
+// The technique's shipped presets and the user's saved ones: one click loads one. Saving names
+// the preset and puts it in user_preset_dir(), where the menu finds it.
+void preset_menu(SandboxController& c, UiState& ui) {
+  const std::string technique = c.session().technique();
+  const std::filesystem::path dir = user_preset_dir();
+  if (begin_combo(ui.probe, "preset", "load a preset...")) {
+    const std::vector<std::string> shipped = c.shipped_presets(), saved = user_presets(dir, technique);
+    for (const std::string& n : shipped)
+      if (selectable(ui.probe, "preset", n, false) && c.load_preset(n)) ui.post("loaded preset " + n, ImGui::GetTime());
+    if (!shipped.empty() && !saved.empty()) ImGui::Separator();
+    for (const std::string& n : saved) {
+      const std::string path = (dir / technique / (n + ".json")).string();
+      if (selectable(ui.probe, "preset", n + " (saved)", false) && c.load_preset(path)) ui.post("loaded " + path, ImGui::GetTime());
+      tooltip(path);
+    }
+    if (shipped.empty() && saved.empty()) ImGui::TextDisabled("%s ships no presets and none is saved", technique.c_str());
+    ImGui::EndCombo();
+  }
+  tooltip("presets shipped with " + technique + " (\"paper\": the paper's constants) and those saved below");
+  const float button_w = ImGui::CalcTextSize("save as").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x * 0.45f, 60.0f));
+  ImGui::InputText("##preset name", ui.preset_name, sizeof ui.preset_name);
+  probe_item(ui.probe, "preset name");
+  ImGui::SameLine();
+  if (ImGui::Button("save as", ImVec2(button_w, 0))) {
+    Result<std::filesystem::path> path = user_preset_path(dir, technique, ui.preset_name);
+    std::error_code ec;
+    if (path) std::filesystem::create_directories(path->parent_path(), ec);
+    Status st = c.note(!path ? Status(path.error()) : c.save_preset(path->string()));
+    if (st) ui.post("saved " + path->string(), ImGui::GetTime());
+  }
+  probe_item(ui.probe, "save as");
+  tooltip("save the current values as a preset named on the left, in " + (dir / technique).string());
 }
 
 void technique_panel(SandboxController& c, UiState& ui) {
   if (!ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) return;
   technique::TechniqueSession& s = c.session();
-  if (ImGui::BeginCombo("technique", s.technique().c_str())) {
+  if (begin_combo(ui.probe, "technique", s.technique().c_str())) {
     for (const std::string& n : c.technique_names()) {
-      if (ImGui::Selectable(n.c_str(), n == s.technique())) (void)c.set_technique(n);
+      if (selectable(ui.probe, "technique", n, n == s.technique())) (void)c.set_technique(n);
       tooltip(c.technique_description(n));
     }
     ImGui::EndCombo();
   }
   ImGui::TextWrapped("%s", s.graph().description.c_str());
-  for (const graph::ParamDesc& d : s.params().descs()) parameter_widget(c, d);
+  preset_menu(c, ui);
+  for (const graph::ParamDesc& d : s.params().descs()) parameter_widget(c, ui, d);
   if (ImGui::Button("reset all")) (void)c.reset_param("all");
+  probe_item(ui.probe, "reset all");
   ImGui::SameLine();
-  ImGui::TextDisabled("compiles: %d", s.compile_count());
-  ImGui::InputText("preset", ui.preset_path, sizeof ui.preset_path);
-  if (ImGui::Button("save preset")) {
-    Status st = c.note(c.save_preset(ui.preset_path));
-    if (st) ui.post(std::string("saved ") + ui.preset_path, ImGui::GetTime());
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("load preset")) {
-    Status st = c.load_preset(ui.preset_path);
-    if (st) ui.post(std::string("loaded ") + ui.preset_path, ImGui::GetTime());
-  }
+  ImGui::TextDisabled("compiles: %4d", s.compile_count());
 }
 
 void graph_panel(SandboxController& c, UiState& ui) {
-  if (!ImGui::CollapsingHeader("Graph", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  // Closed at start: it is taller than the rest together.
+  ui.graph_open = ImGui::CollapsingHeader("Graph");
+  probe_item(ui.probe, "Graph");
+  if (!ui.graph_open) return;
   technique::TechniqueSession& s = c.session();
   const graph::CompiledPlan& plan = s.plan();
-  draw_graph_view(c, ui.graph_view);
-  ImGui::TextDisabled("times: %s", s.executor().timing_mode() == exec::TimingMode::gpu_timestamps ? "GPU timestamps"
-                                                                                                   : "glFinish + CPU clock");
+  draw_graph_view(c, ui.graph_view, ui.probe);
+  ImGui::TextDisabled("times: %s", exec::timing_mode_name(s.executor().timing_mode()));
+  probe_item(ui.probe, "times");
   ImGui::Text("memory: naive %s, assigned %s", mib(plan.memory.naive_bytes).c_str(),
               mib(plan.memory.assigned_bytes).c_str());
   ImGui::Text("pool: %zu textures, %s", s.pool().texture_count(), mib(s.pool().bytes()).c_str());
@@ -213,21 +270,7 @@ void colour_bar(const ViewerSettings& v) {
   if (v.resource.empty() || v.map == ViewerSettings::Map::color) return;
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const float w = ImGui::GetContentRegionAvail().x * 0.9f, h = 12.0f;
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  constexpr int kSteps = 32;
-  auto colour = [&](float t) -> ImU32 {
-    if (v.map == ViewerSettings::Map::grey) {
-      const int g = static_cast<int>(t * 255.0f);
-      return IM_COL32(g, g, g, 255);
-    }
-    const glm::u8vec3 c = metrics::heat_color(t);
-    return IM_COL32(c.r, c.g, c.b, 255);
-  };
-  for (int i = 0; i < kSteps; ++i) {
-    const float t0 = float(i) / kSteps, t1 = float(i + 1) / kSteps;
-    dl->AddRectFilledMultiColor(ImVec2(at.x + t0 * w, at.y), ImVec2(at.x + t1 * w, at.y + h), colour(t0), colour(t1),
-                                colour(t1), colour(t0));
-  }
+  draw_colour_bar(ImGui::GetWindowDrawList(), at, ImVec2(w, h), v.map);
   ImGui::Dummy(ImVec2(w, h));
   ImGui::Text("%.4g", v.min);
   ImGui::SameLine(w * 0.5f - 20.0f);
@@ -236,20 +279,22 @@ void colour_bar(const ViewerSettings& v) {
   ImGui::Text("%.4g", v.max);
 }
 
-void viewer_panel(SandboxController& c) {
-  if (!ImGui::CollapsingHeader("Resource viewer")) return;
+void viewer_panel(SandboxController& c, UiState& ui) {
+  const bool open = ImGui::CollapsingHeader("Resource viewer");
+  probe_item(ui.probe, "Resource viewer");
+  if (!open) return;
   ViewerSettings& v = c.viewer();
   const char* shown = v.resource.empty() ? "(off)" : v.resource.c_str();
-  if (ImGui::BeginCombo("resource", shown)) {
-    if (ImGui::Selectable("(off)", v.resource.empty())) (void)c.view_resource("");
+  if (begin_combo(ui.probe, "resource", shown)) {
+    if (selectable(ui.probe, "resource", "(off)", v.resource.empty())) (void)c.view_resource("");
     for (const std::string& n : c.session().executor().resource_names())
-      if (ImGui::Selectable(n.c_str(), n == v.resource)) (void)c.view_resource(n);
+      if (selectable(ui.probe, "resource", n, n == v.resource)) (void)c.view_resource(n);
     ImGui::EndCombo();
   }
   int map = static_cast<int>(v.map);
-  if (ImGui::Combo("colour map", &map, "colour\0grey\0heat\0")) v.map = static_cast<ViewerSettings::Map>(map);
+  if (combo_index(ui.probe, "colour map", &map, {"colour", "grey", "heat", "signed"})) v.map = static_cast<ViewerSettings::Map>(map);
   int place = static_cast<int>(v.placement);
-  if (ImGui::Combo("placement", &place, "full screen\0inset\0"))
+  if (combo_index(ui.probe, "placement", &place, {"full screen", "inset"}))
     v.placement = static_cast<ViewerSettings::Placement>(place);
   ImGui::DragFloatRange2("range", &v.min, &v.max, 0.005f, 0.0f, 0.0f, "min %.4g", "max %.4g");
   if (ImGui::Button("auto range")) (void)c.note(apply_auto_range(c));
@@ -282,21 +327,25 @@ void viewer_panel(SandboxController& c) {
 }
 
 void compare_panel(SandboxController& c, UiState& ui) {
-  if (!ImGui::CollapsingHeader("Compare")) return;
+  const bool open = ImGui::CollapsingHeader("Compare");
+  probe_item(ui.probe, "Compare");
+  if (!open) return;
   CompareState& cs = c.compare();
   bool on = cs.enabled;
   if (ImGui::Checkbox("compare", &on)) (void)c.set_compare(on);
+  probe_item(ui.probe, "compare");
   tooltip("split screen: left = active technique, right = the other one (its reference)");
-  if (ImGui::BeginCombo("against", cs.with.empty() ? "(default)" : cs.with.c_str())) {
+  if (begin_combo(ui.probe, "against", cs.with.empty() ? "(default)" : cs.with.c_str())) {
     for (const std::string& n : c.technique_names())
-      if (ImGui::Selectable(n.c_str(), n == cs.with)) (void)c.set_compare(true, n);
+      if (selectable(ui.probe, "against", n, n == cs.with)) (void)c.set_compare(true, n);
     ImGui::EndCombo();
   }
   if (!cs.enabled) return;
   int view = static_cast<int>(cs.view);
-  if (ImGui::Combo("view", &view, "split\0error heat map\0")) (void)c.set_compare_view(static_cast<CompareState::View>(view));
+  if (combo_index(ui.probe, "view", &view, {"split", "signed error (A - B)"}))
+    c.set_compare_view(static_cast<CompareState::View>(view));
   if (cs.view == CompareState::View::split) ImGui::SliderFloat("split", &cs.split, 0.0f, 1.0f);
-  else ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "|a-b| = %.2f is white");
+  else ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "A - B = +-%.2f is full colour");
   ImGui::SliderInt("stats every", &cs.stats_every, 1, 120, "%d frames");
   const std::string progress = progress_text(c);
   if (!progress.empty()) {
@@ -316,8 +365,10 @@ void compare_panel(SandboxController& c, UiState& ui) {
     for (float v : cs.rmse_history) top = std::max(top, v);
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "RMSE history, max %.4f", top);
+    // An explicit width: ImGui 1.86 draws ImVec2(-1, h) as a sliver here.
     ImGui::PlotLines("##rmse", cs.rmse_history.data(), static_cast<int>(cs.rmse_history.size()), 0, overlay, 0.0f,
-                     std::max(top, 1e-6f), ImVec2(-1, 40));
+                     std::max(top, 1e-6f), ImVec2(ImGui::GetContentRegionAvail().x, 40));
+    probe_item(ui.probe, "rmse history");
   }
   ImGui::InputText("metrics file", ui.metrics_path, sizeof ui.metrics_path);
   if (ImGui::Button("export metrics")) {
@@ -332,10 +383,15 @@ void compare_panel(SandboxController& c, UiState& ui) {
 // scroll when long, so no widget below moves when one appears. Errors stay until the next
 // action succeeds; transient notes fade.
 void messages_panel(SandboxController& c, UiState& ui) {
-  if (ImGui::Button("screenshot (F12)")) ui.screenshot_requested = true;
+  const bool comparing = c.compare().enabled;
+  if (ImGui::Button(comparing ? "stop comparing" : "compare with reference")) (void)c.set_compare(!comparing);
+  probe_item(ui.probe, "compare with reference");
+  tooltip("split view: this technique left, the reference (or the technique chosen under Compare) right");
   ImGui::SameLine();
+  if (ImGui::Button("screenshot (F12)")) ui.screenshot_requested = true;
   ImGui::SetNextItemWidth(-1);
   ImGui::InputText("##shot", ui.screenshot_path, sizeof ui.screenshot_path);
+  probe_item(ui.probe, "screenshot path");
   const float lines = 4.0f;
   ImGui::BeginChild("##messages", ImVec2(0, lines * ImGui::GetTextLineHeightWithSpacing() + 8.0f), true);
   ImGui::PushTextWrapPos(0.0f);
@@ -363,6 +419,16 @@ void messages_panel(SandboxController& c, UiState& ui) {
   ImGui::EndChild();
 }
 
+// Esc closes the topmost open thing: a combo's list, else the full-screen resource view, else
+// the compare split. A text field being edited takes Esc itself (it reverts the edit).
+void close_on_escape(SandboxController& c, UiState& ui) {
+  if (!ui.escape || ImGui::GetIO().WantTextInput) return;
+  ui.probe.keys["escape"]++;
+  if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) ImGui::ClosePopupToLevel(0, true);
+  else if (!c.viewer().resource.empty()) (void)c.view_resource("");
+  else if (c.compare().enabled) (void)c.set_compare(false);
+}
+
 }  // namespace
 
 float UiState::note_alpha(double now) const {
@@ -373,25 +439,32 @@ float UiState::note_alpha(double now) const {
 }
 
 void draw_sandbox_ui(SandboxController& c, UiState& ui, const Layout& layout) {
+  ui.probe.begin_frame();
+  close_on_escape(c, ui);
   ImGui::SetNextWindowPos(ImVec2(float(layout.panel.x), float(layout.panel.y)));
   ImGui::SetNextWindowSize(ImVec2(float(layout.panel.w), float(layout.panel.h)));
+  // The scrollbar always shows: content growing past the window (a section opened, a message)
+  // must not narrow the widgets and shift them sideways.
   ImGui::Begin("Penumbra", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings);
+                   ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_AlwaysVerticalScrollbar);
   // Widgets take 45% of the panel: long parameter names and the reset buttons stay readable.
   ImGui::PushItemWidth(ImGui::GetWindowWidth() * 0.45f);
-  ImGui::Text("%.1f fps  frame %dx%d", ImGui::GetIO().Framerate, c.width(), c.height());
+  // Fixed-width numbers (the font is monospaced): nothing on the line moves as they change.
+  ImGui::Text("%6.1f fps  frame %5dx%-5d", ImGui::GetIO().Framerate, c.width(), c.height());
   messages_panel(c, ui);
   scene_panel(c, ui);
-  light_panel(c);
+  light_panel(c, ui);
   technique_panel(c, ui);
   graph_panel(c, ui);
-  viewer_panel(c);
+  viewer_panel(c, ui);
   compare_panel(c, ui);
   ImGui::PopItemWidth();
   ImGui::End();
   draw_panel_divider(ui.panel_width, layout);
   draw_viewport_overlay(c, layout);
+  probe_tooltip(ui.probe);
 }
 
 }  // namespace penumbra::sandbox

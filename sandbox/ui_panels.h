@@ -1,22 +1,26 @@
 #pragma once
 // The ImGui panels. Every widget calls a SandboxController method (the same ones script steps
-// call); the only state kept here is what the user is typing.
+// call); the state kept here is what the user is typing, and the probe tests read.
 #include <string>
 
 #include "sandbox/controller.h"
 #include "sandbox/graph_view.h"
 #include "sandbox/layout.h"
+#include "sandbox/ui_widgets.h"
 
 namespace penumbra::sandbox {
 
 struct UiState {
   char scene_path[512] = "";
-  char preset_path[512] = "preset.json";
+  char preset_name[64] = "my-preset";  // saved into user_preset_dir() (sandbox/user_presets.h)
   char screenshot_path[512] = "penumbra-screenshot.png";
   char metrics_path[512] = "penumbra-metrics.json";
   bool screenshot_requested = false;  // set by the button, served by the host after rendering
+  bool escape = false;                // Esc this frame: closes the topmost open thing
+  bool graph_open = false;            // the Graph section (closed at start: it is tall)
   int panel_width = kDefaultPanelWidth;  // pixels; the divider drags it
   GraphViewCache graph_view;             // the plan's dot layout, redone when the plan changes
+  UiProbe probe;
 
   // A transient note ("saved x.png"): shown for kNoteSeconds, then fades out over kFadeSeconds.
   static constexpr double kNoteSeconds = 4.0, kFadeSeconds = 1.5;

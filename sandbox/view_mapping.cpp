@@ -5,6 +5,18 @@
 
 namespace penumbra::sandbox {
 
+std::optional<int> colour_map_index(const std::string& name) {
+  for (int i = 0; i < int(std::size(kColourMapNames)); ++i)
+    if (name == kColourMapNames[i]) return i;
+  return std::nullopt;
+}
+
+glm::vec3 diverging_color(float t) {
+  t = std::clamp(t, 0.0f, 1.0f);
+  const glm::vec3 under(0.15f, 0.35f, 0.95f), middle(1.0f), over(0.95f, 0.2f, 0.15f);
+  return t < 0.5f ? glm::mix(under, middle, t * 2.0f) : glm::mix(middle, over, t * 2.0f - 1.0f);
+}
+
 ViewZoom clamped(ViewZoom z) {
   z.zoom = std::clamp(std::isfinite(z.zoom) ? z.zoom : 1.0f, 1.0f, kMaxZoom);
   const float half = 0.5f / z.zoom;

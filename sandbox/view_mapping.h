@@ -5,10 +5,20 @@
 // with its own aspect (a square shadow map stays square), and a frame pixel back to a texel.
 // Rectangles are (x, y, width, height) in GL pixels (origin bottom-left) or uv.
 #include <optional>
+#include <string>
 
 #include <glm/glm.hpp>
 
 namespace penumbra::sandbox {
+
+// The display's colour maps by name (scripts' "map", the viewer's combo), in the order of
+// ViewerSettings::Map and display.frag.glsl's map_mode. "signed": blue below 0, white at 0, red
+// above, over [-s, s] (the compare error view: A - reference).
+inline constexpr const char* kColourMapNames[] = {"color", "grey", "heat", "signed"};
+// Index of `name` in kColourMapNames; none for another name.
+std::optional<int> colour_map_index(const std::string& name);
+// The "signed" map at t in [0, 1] (0.5 is zero), RGB 0..1: the legend's colours.
+glm::vec3 diverging_color(float t);
 
 struct ViewZoom {
   float zoom = 1.0f;               // 1 = the whole image; 2 = half of it in each direction

@@ -9,7 +9,9 @@
 #include "sandbox/compare_metrics.h"
 #include "sandbox/inspector.h"
 #include "sandbox/shadow_debug.h"
+#include "sandbox/ui_widgets.h"
 #include "technique/frame_graph.h"
+#include "util/row_order.h"
 
 namespace penumbra::sandbox {
 
@@ -42,6 +44,23 @@ void label(ImDrawList* dl, ImVec2 at, const std::string& text, float wrap) {
   dl->AddText(nullptr, 0.0f, at, IM_COL32(240, 240, 240, 255), text.c_str(), nullptr, wrap);
 }
 
+// The error view's legend at the bottom-right corner (right, bottom): the signed map from
+// -scale (A darker than B) to +scale (A lighter).
+void error_legend(ImDrawList* dl, float right, float bottom, float scale) {
+  const char* title = "A - B: blue A darker, red lighter";
+  const float kW = std::max(170.0f, ImGui::CalcTextSize(title).x), kH = 10.0f;
+  const float x = right - kW - 14.0f, y = bottom - kH - 26.0f;
+  dl->AddRectFilled(ImVec2(x - 6, y - 20), ImVec2(x + kW + 6, y + kH + 20), IM_COL32(0, 0, 0, 170), 3.0f);
+  dl->AddText(ImVec2(x, y - 17), IM_COL32(240, 240, 240, 255), title);
+  draw_colour_bar(dl, ImVec2(x, y), ImVec2(kW, kH), ViewerSettings::Map::signed_error);
+  char lo[24], hi[24];
+  std::snprintf(lo, sizeof lo, "-%.3g", scale);
+  std::snprintf(hi, sizeof hi, "+%.3g", scale);
+  dl->AddText(ImVec2(x, y + kH + 2), IM_COL32(240, 240, 240, 255), lo);
+  dl->AddText(ImVec2(x + kW * 0.5f - 3, y + kH + 2), IM_COL32(240, 240, 240, 255), "0");
+  dl->AddText(ImVec2(x + kW - ImGui::CalcTextSize(hi).x, y + kH + 2), IM_COL32(240, 240, 240, 255), hi);
+}
+
 // The light's frustum (yellow) and emitter (orange), projected over the frame.
 void draw_light_frustum(SandboxController& c, ImDrawList* dl, float x0, float y0) {
   if (!c.session().has_scene()) return;
@@ -60,7 +79,7 @@ void draw_blocker_region(SandboxController& c, ImDrawList* dl, float x0, float y
   if (!depth || !c.session().has_scene() || depth->width() != c.width() || depth->height() != c.height()) return;
   const ViewZoom& z = c.viewer().zoom;
   const std::optional<glm::ivec2> t =
-      pixel_to_texel({px, c.height() - 1 - py}, {0, 0, c.width(), c.height()}, zoomed_uv_rect(z), depth->width(), depth->height());
+      pixel_to_texel({px, flipped_row(py, c.height())}, {0, 0, c.width(), c.height()}, zoomed_uv_rect(z), depth->width(), depth->height());
   if (!t) return;
   float view_depth = 0.0f;
   glGetTextureSubImage(depth->id(), 0, t->x, t->y, 0, 1, 1, 1, GL_RED, GL_FLOAT, sizeof view_depth, &view_depth);
@@ -132,20 +151,21 @@ void draw_viewport_overlay(SandboxController& c, const Layout& layout) {
       const float half = std::max(w * 0.5f - 16.0f, 80.0f);
       label(dl, ImVec2(x0 + 8, y0 + 6), "A: " + settings_label(c.session()), std::max(std::min(half, split_x - x0 - 12), 60.0f));
       const std::string right = "B: " + settings_label(*c.secondary());
-      // The statistics on the view itself, so window screenshots carry them.
-      if (cs.stats) {
-        char stats[160];
-        std::snprintf(stats, sizeof stats, "RMSE %.4f  penumbra %s  MAE %.4f  max %.3f", cs.stats->rmse,
-                      penumbra_rmse_text(*cs.stats).c_str(), cs.stats->mae, cs.stats->max_error);
-        std::string line = stats;
-        if (const std::string p = progress_text(c); !p.empty()) line += "  |  " + p;
-        label(dl, ImVec2(x0 + 8, y0 + 28), line, std::max(w - 16, 60.0f));
-      }
       const float rw = std::min(ImGui::CalcTextSize(right.c_str()).x, half);
       label(dl, ImVec2(x0 + w - rw - 8, y0 + 6), right, half);
     } else {
       label(dl, ImVec2(x0 + 8, y0 + 6),
-            "|A - B|  A: " + settings_label(c.session()) + "   B: " + settings_label(*c.secondary()), w - 16);
+            "A - B  A: " + settings_label(c.session()) + "   B: " + settings_label(*c.secondary()), w - 16);
+      error_legend(dl, x0 + w, y0 + h, cs.error_max);
+    }
+    // The statistics on the view itself, in every view mode, so window screenshots carry them.
+    if (cs.stats) {
+      char stats[160];
+      std::snprintf(stats, sizeof stats, "RMSE %.4f  penumbra %s  MAE %.4f  max %.3f", cs.stats->rmse,
+                    penumbra_rmse_text(*cs.stats).c_str(), cs.stats->mae, cs.stats->max_error);
+      std::string line = stats;
+      if (const std::string p = progress_text(c); !p.empty()) line += "  |  " + p;
+      label(dl, ImVec2(x0 + 8, y0 + 28), line, std::max(w - 16, 60.0f));
     }
   }
   const ViewerSettings& v = c.viewer();

@@ -3,17 +3,22 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <thread>
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "sandbox/input_queue.h"
 #include "sandbox/layout.h"
 #include "sandbox/script_runner.h"
 #include "sandbox/ui_panels.h"
+#include "sandbox/ui_state_dump.h"
 #include "util/png.h"
+#include "util/row_order.h"
 
 namespace penumbra::sandbox {
 
@@ -26,18 +31,36 @@ Status save_back_buffer(const std::string& path, int width, int height) {
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
-  std::vector<unsigned char> top_down(bottom_up.size());
-  const size_t row = static_cast<size_t>(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&bottom_up[(height - 1 - y) * row], row, &top_down[y * row]);
+  std::vector<unsigned char> top_down = rows_flipped(bottom_up, static_cast<size_t>(width) * 4, height);
   for (size_t i = 3; i < top_down.size(); i += 4) top_down[i] = 255;  // the window is opaque
   return write_png_rgba8(path, width, height, top_down);
 }
 
-// WASD + right-mouse look + Shift; Space aligns the light; F12 asks for a screenshot.
+static_assert(InputEvent::kPress == GLFW_PRESS && InputEvent::kRelease == GLFW_RELEASE &&
+              InputEvent::kRepeat == GLFW_REPEAT);
+
+// Key and character events reach ImGui through the queue (sandbox/input_queue.h): ImGui 1.86's
+// own callbacks set key state directly, so a tap between two frames was never seen down.
+InputQueue* g_input = nullptr;
+void queue_key(GLFWwindow*, int key, int scancode, int action, int mods) {
+  if (g_input) g_input->push({.kind = InputEvent::Kind::key, .key = key, .scancode = scancode, .action = action, .mods = mods});
+}
+void queue_char(GLFWwindow*, unsigned codepoint) {
+  if (g_input) g_input->push({.kind = InputEvent::Kind::character, .codepoint = codepoint});
+}
+void deliver_to_imgui(GLFWwindow* w, const std::vector<InputEvent>& events) {
+  for (const InputEvent& e : events) {
+    if (e.kind == InputEvent::Kind::key) ImGui_ImplGlfw_KeyCallback(w, e.key, e.scancode, e.action, e.mods);
+    else ImGui_ImplGlfw_CharCallback(w, e.codepoint);
+  }
+}
+
+// WASD + right-mouse look + Shift (held keys, polled); Space aligns the light and F12 asks for
+// a screenshot (taps, from this frame's events).
 class CameraInput {
  public:
-  void update(GLFWwindow* w, SandboxController& c, UiState& ui, const Rect& viewport, float dt) {
+  void update(GLFWwindow* w, SandboxController& c, UiState& ui, const Rect& viewport, float dt,
+              const std::vector<InputEvent>& events) {
     const ImGuiIO& io = ImGui::GetIO();
     if (!io.WantCaptureKeyboard) {
       auto down = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS; };
@@ -46,9 +69,16 @@ class CameraInput {
                      float(down(GLFW_KEY_W)) - float(down(GLFW_KEY_S)));
       if (axes != glm::vec3(0.0f))
         c.move_camera(axes, dt, down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT));
-      if (pressed(w, GLFW_KEY_SPACE, space_)) c.align_light_with_camera();
-      if (pressed(w, GLFW_KEY_F12, f12_)) ui.screenshot_requested = true;
+      if (pressed_in(events, GLFW_KEY_SPACE)) {
+        c.align_light_with_camera();
+        ui.probe.keys["space"]++;
+      }
+      if (pressed_in(events, GLFW_KEY_F12)) {
+        ui.screenshot_requested = true;
+        ui.probe.keys["f12"]++;
+      }
     }
+    ui.escape = pressed_in(events, GLFW_KEY_ESCAPE);
     double x = 0, y = 0;
     glfwGetCursorPos(w, &x, &y);
     bool rmb = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
@@ -72,13 +102,7 @@ class CameraInput {
   }
 
  private:
-  static bool pressed(GLFWwindow* w, int key, bool& was_down) {
-    bool down = glfwGetKey(w, key) == GLFW_PRESS;
-    bool edge = down && !was_down;
-    was_down = down;
-    return edge;
-  }
-  bool looking_ = false, panning_ = false, space_ = false, f12_ = false;
+  bool looking_ = false, panning_ = false;
   double last_x_ = 0, last_y_ = 0;
 };
 
@@ -92,7 +116,14 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
   ImGuiIO& io = ImGui::GetIO();
   if (scripted) io.IniFilename = nullptr;  // reproducible layout for scripted screenshots
   ImGui::StyleColorsDark();
+  // Opaque lists and tooltips: the frame behind them must not show through.
+  ImGui::GetStyle().Colors[ImGuiCol_PopupBg].w = 1.0f;
+  ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 1.0f;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  InputQueue input_queue;
+  g_input = &input_queue;
+  glfwSetKeyCallback(window, queue_key);  // after ImGui's: these replace its key and char callbacks
+  glfwSetCharCallback(window, queue_char);
   ImGui_ImplOpenGL3_Init("#version 450");
 
   UiState ui;
@@ -111,6 +142,8 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
   std::uint64_t frame = 0;
   while (!glfwWindowShouldClose(window)) {
     glfwPollEvents();
+    const std::vector<InputEvent> events = input_queue.take_frame();
+    deliver_to_imgui(window, events);
     double now = glfwGetTime();
     float dt = static_cast<float>(now - last_time);
     last_time = now;
@@ -141,7 +174,7 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
       take_final = frame >= 2;
     }
 
-    input.update(window, controller, ui, layout.viewport, dt);
+    input.update(window, controller, ui, layout.viewport, dt, events);
     if (Status s = controller.render_frame(); !s) {
       const ScriptStep* step = runner ? runner->current() : nullptr;
       Error e = step ? step_error(*step, "frame failed: " + s.error().to_string()) : s.error();
@@ -191,10 +224,21 @@ int run_window(gl::Context& context, SandboxController& controller, const Window
         exit_code = s.error().exit_code();
       }
     }
+    if (!run.state_file.empty())
+      if (Status s = write_ui_state(run.state_file, controller, ui, layout, frame, fb_w, fb_h); !s) {
+        std::fprintf(stderr, "penumbra-sandbox: %s\n", s.error().to_string().c_str());
+        exit_code = s.error().exit_code();
+      }
     context.swap_buffers();
     ++frame;
     if (exit_code != 0) break;
+    if (run.max_fps > 0) {  // --max-fps: sleep out the rest of the frame's time
+      const double until = now + 1.0 / run.max_fps;
+      if (const double left = until - glfwGetTime(); left > 0)
+        std::this_thread::sleep_for(std::chrono::duration<double>(left));
+    }
   }
+  g_input = nullptr;
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

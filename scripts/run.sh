@@ -2,11 +2,15 @@
 # The main job: builds the release preset, then starts the sandbox when a display exists, or
 # renders the built-in showcase scene with every technique into out/ when none does (the
 # reference is ray-traced there, so its image is exact rather than a progressive average).
+# PENUMBRA_BUILD_DIR=DIR runs an existing build instead (tests run the dev build this way).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake --preset release >/dev/null
-cmake --build --preset release -j "$(nproc)"
-build=build/release
+build=${PENUMBRA_BUILD_DIR:-}
+if [ -z "$build" ]; then
+  cmake --preset release >/dev/null
+  cmake --build --preset release -j "$(nproc)"
+  build=build/release
+fi
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec "$build/sandbox/penumbra-sandbox" --scene showcase "$@"
 fi

@@ -53,7 +53,9 @@ Status Executor::set_plan(graph::CompiledPlan plan) {
   buffers_ = std::move(buffers);
   std::vector<std::string> names;
   for (const graph::PlannedPass& p : plan_.passes) names.push_back(p.name);
-  timer_.reset(names, TimingMode::off);  // decided on first execute, when GL info is known
+  // The mode stays what the last frame used (a fresh executor decides on its first execute, when
+  // GL info is known): a label drawn between a recompile and the next frame must not change.
+  timer_.reset(names, timer_.mode());
   has_plan_ = true;
   progress_.reset();  // the new plan's passes start their work afresh
   return {};
@@ -119,6 +121,7 @@ Status Executor::execute(const graph::ParameterSet& params, const FrameInputs& f
   }
   timer_.end_frame();
   ++frames_;
+  pool_.end_frame();
   return result;
 }
 

@@ -11,6 +11,15 @@ double PassTiming::median_ms() const {
   return v[v.size() / 2];
 }
 
+const char* timing_mode_name(TimingMode mode) {
+  switch (mode) {
+    case TimingMode::gpu_timestamps: return "GPU timestamps";
+    case TimingMode::cpu_finish: return "glFinish + CPU clock";
+    case TimingMode::off: return "off";
+  }
+  return "?";
+}
+
 void PassTimer::reset(const std::vector<std::string>& pass_names, TimingMode mode) {
   mode_ = mode;
   timings_.clear();

@@ -18,6 +18,8 @@
 namespace penumbra::exec {
 
 enum class TimingMode { gpu_timestamps, cpu_finish, off };
+// How the times were taken, for labels: "GPU timestamps", "glFinish + CPU clock", "off".
+const char* timing_mode_name(TimingMode mode);
 
 struct PassTiming {
   std::string name;

@@ -16,16 +16,23 @@ void TexturePool::end_generation() {
   buffers_.erase(std::remove_if(buffers_.begin(), buffers_.end(), stale), buffers_.end());
 }
 
+void TexturePool::end_frame() {
+  auto idle = [](auto& e) { return !e.in_use && ++e.idle_frames >= kKeepFrames; };
+  textures_.erase(std::remove_if(textures_.begin(), textures_.end(), idle), textures_.end());
+  buffers_.erase(std::remove_if(buffers_.begin(), buffers_.end(), idle), buffers_.end());
+}
+
 gl::Texture* TexturePool::acquire(gl::Format format, int width, int height) {
   for (auto& e : textures_) {
     const gl::Texture& t = *e.texture;
     if (!e.in_use && t.format() == format && t.width() == width && t.height() == height) {
       e.in_use = true;
       e.generation = generation_;
+      e.idle_frames = 0;
       return e.texture.get();
     }
   }
-  textures_.push_back({std::make_unique<gl::Texture>(format, width, height), generation_, true});
+  textures_.push_back({std::make_unique<gl::Texture>(format, width, height), generation_, true, 0});
   return textures_.back().texture.get();
 }
 
@@ -34,10 +41,11 @@ gl::Buffer* TexturePool::acquire_buffer(size_t bytes) {
     if (!e.in_use && e.buffer->size() == bytes) {
       e.in_use = true;
       e.generation = generation_;
+      e.idle_frames = 0;
       return e.buffer.get();
     }
   }
-  buffers_.push_back({std::make_unique<gl::Buffer>(bytes, nullptr, true), generation_, true});
+  buffers_.push_back({std::make_unique<gl::Buffer>(bytes, nullptr, true), generation_, true, 0});
   return buffers_.back().buffer.get();
 }
 

@@ -147,31 +147,31 @@ class Resolver {
     return errors_.size() == errors_before;
   }
 
-  // "applies" conditions that read an exposing parameter could not be type-checked before its
+  // "applies" and "capped_by" conditions that read an exposing parameter could not be type-checked before its
   // type was known (graph_json.cpp checks the others); all of them are checked here.
   void check_applies() {
     std::vector<ParamDesc> readable = graph_.parameters;
     for (ParamDesc& d : readable) d.structural = true;  // applies may read any parameter
     const ParameterSet params(std::move(readable));
-    for (const ParamDesc& d : graph_.parameters) {
-      if (d.applies.empty()) continue;
-      Result<Condition> c = Condition::parse(d.applies);
-      std::optional<ConditionProblem> problem =
-          c ? c->check(params) : ConditionProblem{ConditionProblem::Kind::syntax, c.error().message};
-      if (!problem) continue;
-      GraphError err;
-      err.code = problem->kind == ConditionProblem::Kind::unknown_parameter ? GraphErrorCode::unknown_param_reference
-                                                                           : GraphErrorCode::bad_condition;
-      err.file = graph_.source_file;
-      err.where = applies_location(d.name);
-      err.message = "parameter '" + d.name + "': " + problem->message;
-      errors_.push_back(std::move(err));
-    }
+    for (const ParamDesc& d : graph_.parameters)
+      for (const auto& [key, text] : d.ui_conditions()) {
+        Result<Condition> c = Condition::parse(text);
+        std::optional<ConditionProblem> problem =
+            c ? c->check(params) : ConditionProblem{ConditionProblem::Kind::syntax, c.error().message};
+        if (!problem) continue;
+        GraphError err;
+        err.code = problem->kind == ConditionProblem::Kind::unknown_parameter ? GraphErrorCode::unknown_param_reference
+                                                                             : GraphErrorCode::bad_condition;
+        err.file = graph_.source_file;
+        err.where = condition_location(d.name, key);
+        err.message = "parameter '" + d.name + "': " + problem->message;
+        errors_.push_back(std::move(err));
+      }
   }
 
-  std::string applies_location(const std::string& name) const {
+  std::string condition_location(const std::string& name, const std::string& key) const {
     for (const ParamExposure& e : graph_.exposures)
-      if (e.parameter == name && e.location.size() > 8) return e.location.substr(0, e.location.size() - 8) + "/applies";
+      if (e.parameter == name && e.location.size() > 8) return e.location.substr(0, e.location.size() - 8) + "/" + key;
     return "parameter '" + name + "'";
   }
 

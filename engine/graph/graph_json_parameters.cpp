@@ -50,7 +50,7 @@ void GraphReader::read_parameter(const Json& j, const std::string& ptr, GraphDes
     else d.type = *t;
   }
   check_keys(j, ptr, {"name", "type", "default", "min", "max", "step", "unit", "description", "structural", "options",
-                      "applies", "exposes"});
+                      "applies", "capped_by", "exposes"});
   get_string(j, "unit", ptr, d.unit, false);
   get_text(j, "description", ptr, d.description);
   if (auto it = j.find("structural"); it != j.end()) {
@@ -72,6 +72,19 @@ void GraphReader::read_parameter(const Json& j, const std::string& ptr, GraphDes
     else d.step = it->get<int>();
   }
   get_text(j, "applies", ptr, d.applies);
+  if (auto it = j.find("capped_by"); it != j.end()) {
+    const std::string cap_ptr = ptr + "/capped_by";
+    if (!it->is_object()) {
+      error(GraphErrorCode::wrong_json_type, cap_ptr, "\"capped_by\" must be an object {\"param\", \"when\", \"why\"}");
+    } else {
+      check_keys(*it, cap_ptr, {"param", "when", "why"});
+      ParamDesc::Cap cap;
+      get_string(*it, "param", cap_ptr, cap.param, true);
+      get_text(*it, "when", cap_ptr, cap.when);
+      get_string(*it, "why", cap_ptr, cap.why, true);
+      d.capped_by = std::move(cap);
+    }
+  }
   if (auto it = j.find("options"); it != j.end()) {
     if (!it->is_array()) error(GraphErrorCode::wrong_json_type, ptr + "/options", "\"options\" must be an array of strings");
     else
@@ -108,16 +121,24 @@ void GraphReader::read_parameter(const Json& j, const std::string& ptr, GraphDes
   g.parameters.push_back(std::move(d));
 }
 
-// "applies" conditions, once every parameter is known. Unlike `enabled`, they may read
-// non-structural parameters: they only tell a UI whether a value has an effect.
+// "applies" and "capped_by" conditions, once every parameter is known. Unlike `enabled`, they
+// may read non-structural parameters: they only tell a UI whether a value has an effect.
 void GraphReader::check_applies(const GraphDesc& g) {
   std::vector<ParamDesc> readable = g.parameters;
   for (ParamDesc& d : readable) d.structural = true;  // so check() reports only real problems
   const ParameterSet params(std::move(readable));
   for (const ParamDesc& d : g.parameters) {
-    if (d.applies.empty()) continue;
-    const std::string where = param_pointer_[d.name] + "/applies";
-    Result<Condition> c = Condition::parse(d.applies);
+    if (d.capped_by && !params.find(d.capped_by->param))
+      error(GraphErrorCode::unknown_param_reference, param_pointer_[d.name] + "/capped_by/param",
+            "parameter '" + d.name + "' is capped by '" + shortened(d.capped_by->param) + "', which the graph does not declare");
+    if (d.capped_by && d.capped_by->param == d.name)
+      error(GraphErrorCode::bad_condition, param_pointer_[d.name] + "/capped_by/param",
+            "parameter '" + d.name + "' cannot cap itself");
+  }
+  for (const ParamDesc& d : g.parameters)
+    for (const auto& [key, text] : d.ui_conditions()) {
+    const std::string where = param_pointer_[d.name] + "/" + key;
+    Result<Condition> c = Condition::parse(text);
     if (!c) {
       error(GraphErrorCode::bad_condition, where, "parameter '" + d.name + "': " + c.error().message);
       continue;
@@ -133,7 +154,7 @@ void GraphReader::check_applies(const GraphDesc& g) {
       error(p->kind == ConditionProblem::Kind::unknown_parameter ? GraphErrorCode::unknown_param_reference
                                                                  : GraphErrorCode::bad_condition,
             where, "parameter '" + d.name + "': " + p->message);
-  }
+    }
 }
 
 }  // namespace penumbra::graph::json_detail

@@ -16,7 +16,9 @@
 // compiling again. Non-structural ones are uniforms: the compiled plan keeps "$name"
 // references to them so the executor reads the current value every frame.
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -48,9 +50,24 @@ struct ParamDesc {
   // this parameter has an effect ("$kernel == \"vogel\""); empty = always. For switches inside
   // one pass, which the graph's `enabled` conditions cannot show; the sandbox greys the widget out.
   std::string applies;
+  // Another parameter that caps this one's effect while `when` holds (condition.h syntax; empty =
+  // always), e.g. a search radius whose filter never exceeds a maximum size. The sandbox marks
+  // the widget "capped by <param>" with `why`, so a slider that seems to do nothing says why.
+  struct Cap {
+    std::string param, when, why;
+  };
+  std::optional<Cap> capped_by;
   // Pass types only: the parameter has no default, so every pass of the type must bind it (a
   // separable filter's axis, say, where a default would hide a forgotten binding).
   bool required = false;
+
+  // The conditions a UI evaluates ("applies", "capped_by/when"), with the JSON key each sits under.
+  std::vector<std::pair<std::string, std::string>> ui_conditions() const {
+    std::vector<std::pair<std::string, std::string>> out;
+    if (!applies.empty()) out.emplace_back("applies", applies);
+    if (capped_by && !capped_by->when.empty()) out.emplace_back("capped_by/when", capped_by->when);
+    return out;
+  }
 
   bool has_range() const { return min != 0.0 || max != 0.0; }
   bool has_step() const { return type == ParamType::integer && step > 1; }

@@ -4,7 +4,7 @@
 #include "colormap.glsl"
 
 uniform sampler2D src;
-uniform int map_mode;       // 0 colour (rgb as stored), 1 grey (one channel), 2 heat (one channel)
+uniform int map_mode;       // 0 colour (rgb), 1 grey, 2 heat, 3 signed (one channel; ViewerSettings::Map)
 uniform int channel;        // 0..3: which channel grey/heat read
 uniform vec2 value_range;   // [min, max] mapped to [0, 1]
 uniform int linearize_depth;  // 1: src holds window-space depth of the camera's projection
@@ -34,5 +34,5 @@ void main() {
   float v = texel[channel];
   if (linearize_depth == 1) v = linear_depth(v);
   float t = clamp((v - value_range.x) * scale, 0.0, 1.0);
-  frag_color = vec4(map_mode == 2 ? heat_color(t) : vec3(t), 1.0);
+  frag_color = vec4(map_mode == 2 ? heat_color(t) : map_mode == 3 ? diverging_color(t) : vec3(t), 1.0);
 }

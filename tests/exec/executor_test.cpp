@@ -155,6 +155,23 @@ TEST_F(Executor, EveryPassIsTimedOncePerFrame) {
   }
 }
 
+// A recompile keeps the mode the frames use: a label drawn before the next frame (the sandbox's
+// "times:") said "off" / "glFinish" on a GPU.
+TEST_F(Executor, ANewPlanKeepsTheTimingModeOfTheFrames) {
+  ParameterSet params(graph_.parameters);
+  exec::Executor ex(library_, shaders_, pool_);
+  ex.options().force_timing_mode = exec::TimingMode::gpu_timestamps;
+  ASSERT_TRUE(ex.set_plan(compile_plan(params)));
+  run(ex, params);
+  ASSERT_EQ(ex.timing_mode(), exec::TimingMode::gpu_timestamps);
+  ASSERT_TRUE(ex.set_plan(compile_plan(params)));
+  EXPECT_EQ(ex.timing_mode(), exec::TimingMode::gpu_timestamps);
+  EXPECT_STREQ(exec::timing_mode_name(ex.timing_mode()), "GPU timestamps");
+  run(ex, params);
+  ex.flush_timings();
+  for (const exec::PassTiming& t : ex.timings()) EXPECT_EQ(t.history.size(), 1u) << t.name;
+}
+
 TEST_F(Executor, GpuTimestampsAreQueuedAndEveryFrameIsRecordedAfterFlush) {
   ParameterSet params(graph_.parameters);
   exec::Executor ex(library_, shaders_, pool_);
@@ -220,6 +237,9 @@ TEST_F(Executor, TexturePoolReusesTexturesAcrossRecompilesAndStaysBoundedAcrossR
     ASSERT_TRUE(ex.set_plan(std::move(*plan)));
     EXPECT_LE(pool_.texture_count(), first * (exec::TexturePool::kKeepGenerations + 1)) << i;
   }
+  // Once the sizes stop changing, frames of the last plan free what it does not use.
+  for (int f = 0; f < exec::TexturePool::kKeepFrames; ++f) run(ex, params);
+  EXPECT_EQ(pool_.texture_count(), first);
 }
 
 }  // namespace

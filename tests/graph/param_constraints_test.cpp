@@ -137,5 +137,33 @@ TEST(ParamApplies, ConditionsMayReadAnyParameterAndAreChecked) {
   }
 }
 
+TEST(ParamCappedBy, ReadAndChecked) {
+  const std::string head = R"({"name": "x", "parameters": [
+    {"name": "kernel", "type": "enum", "options": ["box", "vogel"], "default": "box"},
+    {"name": "max_size", "type": "float", "default": 0.04, "min": 0.001, "max": 0.05},
+    {"name": "scale", "type": "float", "default": 1.2, "min": 1, "max": 2, "capped_by": )";
+  auto ok = parse_graph_json(head + R"({"param": "max_size", "when": "$kernel == \"vogel\"", "why": "w"}}], "passes": []})", "a.json");
+  ASSERT_TRUE(ok) << all_messages(ok.errors());
+  ASSERT_TRUE(ok->parameters[2].capped_by.has_value());
+  EXPECT_EQ(ok->parameters[2].capped_by->param, "max_size");
+  EXPECT_EQ(ok->parameters[2].capped_by->when, "$kernel == \"vogel\"");
+  struct Bad {
+    const char* cap;
+    const char* where;
+    const char* says;
+  };
+  for (const Bad& b : {Bad{R"({"param": "nope", "why": "w"})", "/parameters/2/capped_by/param", "nope"},
+                       Bad{R"({"param": "scale", "why": "w"})", "/parameters/2/capped_by/param", "itself"},
+                       Bad{R"({"param": "max_size", "when": "$kernel == \"hex\"", "why": "w"})", "/parameters/2/capped_by/when", "hex"},
+                       Bad{R"({"param": "max_size"})", "/parameters/2/capped_by", "why"},
+                       Bad{R"({"param": "max_size", "why": "w", "by": 1})", "/parameters/2/capped_by", "by"},
+                       Bad{R"("max_size")", "/parameters/2/capped_by", "object"}}) {
+    auto g = parse_graph_json(head + b.cap + R"(}], "passes": []})", "a.json");
+    ASSERT_FALSE(g) << b.cap;
+    EXPECT_EQ(g.errors()[0].where.rfind(b.where, 0), 0u) << b.cap << ": " << all_messages(g.errors());
+    EXPECT_NE(all_messages(g.errors()).find(b.says), std::string::npos) << all_messages(g.errors());
+  }
+}
+
 }  // namespace
 }  // namespace penumbra::graph

@@ -160,11 +160,24 @@ TEST_F(Fixture, CompareSameSettingsHasZeroErrorAndDifferentHasSome) {
   EXPECT_LT(st.rmse, 0.25);
   EXPECT_EQ(controller->secondary()->compile_count(), secondary_compiles);  // untouched
 
+  // The error view is signed (A - B): A is darker in the stripes, so they are blue, and nothing
+  // is red (A is nowhere lighter).
   controller->set_compare_view(CompareState::View::error);
   ASSERT_TRUE(controller->render_frame());
   const std::string path = temp("error.png").string();
   ASSERT_TRUE(controller->save_presentation_png(path));
   EXPECT_GT(sandbox_test::png_stats(path).variance, 10.0);
+  int w = 0, h = 0, n = 0;
+  unsigned char* px = stbi_load(path.c_str(), &w, &h, &n, 3);
+  ASSERT_NE(px, nullptr);
+  int blue = 0, red = 0;
+  for (int i = 0; i < w * h; ++i) {
+    blue += px[3 * i + 2] > px[3 * i] + 60;
+    red += px[3 * i] > px[3 * i + 2] + 60;
+  }
+  stbi_image_free(px);
+  EXPECT_GT(blue, w * h / 50);
+  EXPECT_EQ(red, 0);
   std::filesystem::remove(path);
 
   ASSERT_TRUE(controller->set_compare(false));

@@ -26,8 +26,9 @@ Fixture make(const std::string& kernel, bool use_blur) {
   b.structural = true;
   ParamDesc samples = graph::int_param("samples", 16, 1, 64, "", "taps");
   samples.applies = "$kernel == \"vogel\"";
-  f.graph.parameters = {k, b, samples, graph::real_param("radius", 2.0, 0.0, 8.0, "texels", "blur radius"),
-                        graph::real_param("level", 0.5, 0.0, 1.0, "", "level")};
+  ParamDesc level = graph::real_param("level", 0.5, 0.0, 1.0, "", "level");
+  level.capped_by = ParamDesc::Cap{"radius", "$use_blur", "the blur spreads it"};
+  f.graph.parameters = {k, b, samples, graph::real_param("radius", 2.0, 0.0, 8.0, "texels", "blur radius"), level};
   f.params = graph::ParameterSet(f.graph.parameters);
   EXPECT_TRUE(f.params.set("kernel", kernel));
   EXPECT_TRUE(f.params.set("use_blur", use_blur));
@@ -53,6 +54,14 @@ Fixture make(const std::string& kernel, bool use_blur) {
 
 Applicability of(const Fixture& f, const std::string& name) {
   return param_applicability(*f.params.find(name), f.params, f.graph, f.plan);
+}
+
+TEST(ParamApplicability, ACapIsNamedWithItsValueOnlyWhileItsConditionHolds) {
+  const Applicability capped = of(make("box", true), "level");
+  EXPECT_TRUE(capped.applies);
+  EXPECT_EQ(capped.capped, "capped by radius (now 2): the blur spreads it");
+  EXPECT_EQ(of(make("box", false), "level").capped, "");
+  EXPECT_EQ(of(make("box", true), "radius").capped, "");
 }
 
 TEST(ParamApplicability, AnAppliesConditionThatDoesNotHoldDisablesWithItsText) {

@@ -1,7 +1,12 @@
 // Preset round trip and all-or-nothing rejection (no window, no GL).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include "sandbox/user_presets.h"
 #include "technique/preset.h"
+#include "test_support/temp_dir.h"
 
 namespace penumbra::sandbox {
 namespace {
@@ -83,3 +88,22 @@ TEST(Preset, MalformedPresetsNameTheProblem) {
 
 }  // namespace
 }  // namespace penumbra::sandbox
+
+// The sandbox's own preset folder: listed per technique, names checked.
+namespace {
+TEST(UserPresets, ListedPerTechniqueAndNamesChecked) {
+  namespace fs = std::filesystem;
+  const fs::path dir = penumbra::test::fresh_temp_dir("user_presets");
+  EXPECT_TRUE(penumbra::sandbox::user_presets(dir, "pcss").empty());  // no folder yet
+  fs::create_directories(dir / "pcss");
+  fs::create_directories(dir / "pcf");
+  for (const char* f : {"pcss/soft.json", "pcss/a-1.json", "pcss/notes.txt", "pcf/other.json"}) std::ofstream(dir / f) << "{}";
+  EXPECT_EQ(penumbra::sandbox::user_presets(dir, "pcss"), (std::vector<std::string>{"a-1", "soft"}));
+  auto ok = penumbra::sandbox::user_preset_path(dir, "pcss", "my_look.v2");
+  ASSERT_TRUE(ok);
+  EXPECT_EQ(*ok, dir / "pcss" / "my_look.v2.json");
+  for (const char* bad : {"", "../x", "a/b", ".hidden", "two words"})
+    EXPECT_FALSE(penumbra::sandbox::user_preset_path(dir, "pcss", bad)) << bad;
+  fs::remove_all(dir);
+}
+}  // namespace

@@ -67,6 +67,22 @@ TEST(SandboxXvfb, ExhaustiveScriptOverEveryTechnique) {
   fs::remove_all(dir);
 }
 
+// Defect 5: scripts/run.sh, the README's main command, started a sandbox path that did not exist.
+// Run against this build (PENUMBRA_BUILD_DIR skips its release build), with a display, it starts
+// the sandbox on the showcase scene.
+TEST(SandboxXvfb, RunScriptStartsTheSandboxWithADisplay) {
+  const std::string x = xvfb();
+  ASSERT_FALSE(x.empty()) << "xvfb-run is not installed: run scripts/setup.sh (installs xvfb)";
+  fs::path dir = fresh_dir("run_sh");
+  RunResult r = run_in_xvfb(x, "PENUMBRA_BUILD_DIR=" + std::string(PENUMBRA_BUILD_DIR) + " " + PENUMBRA_SOURCE_DIR +
+                                   "/scripts/run.sh --size 320x240 --shadow-size 512 --screenshot " +
+                                   (dir / "shot.png").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("no display"), std::string::npos) << r.output;
+  expect_not_blank(dir / "shot.png");
+  fs::remove_all(dir);
+}
+
 // The shipped binary itself, with only the built-in techniques (fails, saying so, if none are
 // registered: the sandbox has nothing to show then).
 TEST(SandboxXvfb, ShippedBinaryScreenshotIsNotBlank) {

@@ -1,0 +1,315 @@
+// The shipped sandbox in a real window, driven with synthesized X events (xdotool through
+// XTEST, as a user's mouse and keyboard): each test clicks, types, drags or wheels, then asserts
+// on the state the window reports every frame (--state-file) or on a screenshot region. Each
+// defect named in the test's comment failed here before its fix.
+#include <gtest/gtest.h>
+
+#include <stb/stb_image.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "live_sandbox.h"
+#include "test_support/temp_dir.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using penumbra::sandbox_test::LiveSandbox;
+
+// A tall window (the panel's sections fit with little scrolling), a small frame, a small map.
+const std::string kArgs = " --scene showcase --size 360x860 --shadow-size 512";
+
+std::unique_ptr<LiveSandbox> start(const std::string& name, const std::string& args) {
+  return std::make_unique<LiveSandbox>(SANDBOX_BINARY, args, penumbra::test::fresh_temp_dir("xinput_" + name));
+}
+
+float right(const json& r) { return r[0].get<float>() + r[2].get<float>(); }
+float bottom(const json& r) { return r[1].get<float>() + r[3].get<float>(); }
+
+// Defect 1: two combos shared the ImGui ID "view", so the compare panel's never opened.
+// Every combo of the panel opens under itself on a click, and Esc closes it (defect 7).
+TEST(SandboxXInput, EveryComboOpensUnderItselfAndEscClosesIt) {
+  auto sb = start("combos", kArgs + " --technique hard");
+  sb->settle();
+  sb->click("Compare");
+  sb->settle();
+  sb->click("compare");  // the split and its "view" combo appear
+  sb->settle(6);
+  std::vector<std::string> combos = sb->state()["combos"].get<std::vector<std::string>>();
+  for (const char* expected : {"scene", "camera", "type", "shadow map", "technique", "preset", "against", "view"})
+    EXPECT_NE(std::find(combos.begin(), combos.end(), expected), combos.end()) << expected;
+  for (const std::string& combo : combos) {
+    sb->click(combo);
+    const json& s = sb->settle(4);
+    ASSERT_EQ(s["open_popup"], combo) << "clicking '" << combo << "' opened '" << s["open_popup"] << "'";
+    const json& item = s["items"][combo];
+    const json& list = s["popup"];
+    ASSERT_TRUE(list.is_array()) << combo;
+    EXPECT_NEAR(list[0].get<float>(), item[0].get<float>(), 2.0f) << combo << ": its list opened elsewhere";
+    const bool below = std::abs(list[1].get<float>() - bottom(item)) < 4.0f;
+    const bool above = std::abs(bottom(list) - item[1].get<float>()) < 4.0f;
+    EXPECT_TRUE(below || above) << combo << ": list at y " << list[1] << ", combo at y " << item[1];
+    sb->key("Escape");
+    EXPECT_EQ(sb->settle(4)["open_popup"], "") << "Esc left '" << combo << "' open";
+  }
+  EXPECT_EQ(sb->state()["keys"].value("escape", 0), int(combos.size()));
+}
+
+// Defect 2: keys were polled once a frame, so at a low frame rate a tap between two frames was
+// lost. Three Space taps at 4 fps align the light three times.
+TEST(SandboxXInput, KeyTapsAtFourFramesPerSecondAllArrive) {
+  auto sb = start("taps", kArgs + " --technique hard --max-fps 4");
+  const json& s = sb->state();
+  sb->move_to(s["viewport"][0].get<int>() + 100, s["viewport"][1].get<int>() + 100);
+  sb->settle(2);
+  sb->xdo("key --delay 30 space space space");
+  EXPECT_EQ(sb->settle(8)["keys"].value("space", 0), 3);
+  const json& after = sb->state();
+  for (int i = 0; i < 3; ++i)  // the light looks where the camera looks
+    EXPECT_NEAR(after["light_direction"][i].get<float>(), after["camera_forward"][i].get<float>(), 1e-3f) << i;
+}
+
+// Defect 2: Ctrl+A never arrived (Ctrl, A down and up within one frame). At 4 fps, Ctrl+A then
+// typing replaces the field's text.
+TEST(SandboxXInput, CtrlAThenTypingReplacesAFieldAtFourFramesPerSecond) {
+  auto sb = start("ctrl_a", kArgs + " --technique hard --max-fps 4");
+  sb->click("preset name");
+  sb->settle(3);
+  sb->key("ctrl+a");
+  sb->xdo("type --delay 40 soft-look");
+  EXPECT_EQ(sb->settle(10)["fields"]["preset name"], "soft-look");
+}
+
+// Defect 3: the history plot was a one-pixel sliver (ImVec2(-1, h) in ImGui 1.86).
+TEST(SandboxXInput, FrameHistoryPlotSpansThePanel) {
+  auto sb = start("history", kArgs + " --technique hard");
+  sb->click("Graph");
+  const json& s = sb->settle(10);
+  ASSERT_TRUE(s["items"].contains("frame history")) << s["items"].dump();
+  const json& plot = s["items"]["frame history"];
+  EXPECT_GT(plot[2].get<float>(), 0.85f * s["panel"][2].get<float>() - 40.0f) << plot;
+  EXPECT_GE(plot[3].get<float>(), 40.0f) << plot;
+}
+
+// Defect 7: the graph view was open at start, and the wheel over the viewport must zoom it
+// with the graph view open.
+TEST(SandboxXInput, GraphViewStartsClosedAndTheWheelOverTheViewportZooms) {
+  auto sb = start("wheel", kArgs + " --technique hard");
+  EXPECT_FALSE(sb->state()["graph_open"].get<bool>());
+  sb->click("Graph");
+  ASSERT_TRUE(sb->settle(6)["graph_open"].get<bool>());
+  const json vp = sb->state()["viewport"];
+  sb->move_to(vp[0].get<int>() + vp[2].get<int>() / 2, vp[1].get<int>() + vp[3].get<int>() / 2);
+  sb->settle(2);
+  sb->xdo("click 4");
+  sb->settle(3);
+  sb->xdo("click 4");
+  EXPECT_NEAR(sb->settle(4)["viewer"]["zoom"].get<float>(), 1.25f * 1.25f, 1e-3f);
+}
+
+// Defect 7: reset buttons and "OVER BUDGET" were cut at the default panel width. Every widget
+// of the technique with the longest parameter names, and the graph's budget line, lies inside
+// the panel (short of its scrollbar).
+TEST(SandboxXInput, NoWidgetIsCutAtTheDefaultPanelWidth) {
+  auto sb = start("clipped", kArgs + " --technique sspcss");
+  sb->click("Graph");
+  const json& s = sb->settle(6);
+  const float inside = s["panel"][0].get<float>() + s["panel"][2].get<float>() - 12.0f;  // the scrollbar
+  int resets = 0;
+  for (const auto& [id, r] : s["items"].items()) {
+    EXPECT_LE(right(r), inside) << id << " ends at x " << right(r);
+    resets += id.rfind("reset:", 0) == 0;
+  }
+  EXPECT_GE(resets, 8);
+  EXPECT_TRUE(s["items"].contains("total"));
+}
+
+// Defect 7: tooltips opened off the window and lists were see-through. A parameter's long
+// description, hovered at the right of the panel, lies inside the window, and where it covers
+// the viewport's bright floor its background is the opaque popup colour.
+TEST(SandboxXInput, TooltipsFitTheWindowAndAreOpaque) {
+  auto sb = start("tooltip", kArgs + " --technique sspcss");
+  sb->scroll_into_view("depth_sigma");  // 235 characters of description
+  auto [x, y] = sb->centre("depth_sigma");
+  const json widget = sb->state()["items"]["depth_sigma"];
+  sb->move_to(int(right(widget)) - 10, y);
+  const json s = sb->settle(4);
+  ASSERT_TRUE(s["tooltip"].is_array()) << "no tooltip over the parameter";
+  const json& t = s["tooltip"];
+  EXPECT_GE(t[0].get<float>(), 0.0f);
+  EXPECT_LE(right(t), s["window"][0].get<float>()) << t;
+  EXPECT_LE(bottom(t), s["window"][1].get<float>()) << t;
+  EXPECT_EQ(s["style"]["popup_alpha"].get<float>(), 1.0f);
+  // The shot is taken with the mouse still there (screenshot() would move it).
+  const fs::path shot = sb->dir() / "penumbra-screenshot.png";
+  sb->key("F12");
+  for (int i = 0; i < 100 && !fs::exists(shot); ++i) sb->settle(1);
+  int w = 0, h = 0, n = 0;
+  unsigned char* px = stbi_load(shot.string().c_str(), &w, &h, &n, 3);
+  ASSERT_NE(px, nullptr);
+  // Inside the tooltip's padding over the viewport (no text there): ImGui's dark popup colour,
+  // 0.08 * 255; see-through, the floor behind lifts it.
+  const int tx = int(right(t)) - 4, ty = int(bottom(t)) - 4;
+  ASSERT_GT(tx, s["viewport"][0].get<int>()) << "the tooltip does not reach the viewport: " << t;
+  ASSERT_LT(tx, w);
+  ASSERT_LT(ty, h);
+  const unsigned char* p = px + 3 * (size_t(ty) * w + tx);
+  EXPECT_LE(std::abs(int(p[0]) - 20), 2) << int(p[0]) << " " << int(p[1]) << " " << int(p[2]);
+  stbi_image_free(px);
+}
+
+// The panel divider drags: the panel widens and the viewport follows.
+TEST(SandboxXInput, DraggingTheDividerWidensThePanel) {
+  auto sb = start("divider", kArgs + " --technique hard");
+  const json& s = sb->state();
+  const int before = s["panel"][2].get<int>();
+  const int dx = s["divider"][0].get<int>() + s["divider"][2].get<int>() / 2, dy = s["divider"][1].get<int>() + 200;
+  sb->move_to(dx, dy);
+  sb->settle(2);
+  sb->xdo("mousedown 1");
+  sb->settle(2);
+  for (int step = 1; step <= 4; ++step) {
+    sb->move_to(dx + 20 * step, dy);
+    sb->settle(1);
+  }
+  sb->xdo("mouseup 1");
+  const json& after = sb->settle(4);
+  EXPECT_NEAR(after["panel"][2].get<int>(), before + 80, 6);
+  EXPECT_EQ(after["viewport"][0].get<int>(), after["divider"][0].get<int>() + after["divider"][2].get<int>());
+}
+
+// Defect 6: one click on the preset menu's entry loads a shipped preset; "save as" puts the
+// values in the user's folder, and the menu lists them.
+TEST(SandboxXInput, PresetMenuLoadsWithOneClickAndListsSavedOnes) {
+  auto sb = start("presets", kArgs + " --technique pmchss");
+  ASSERT_NE(sb->state()["params"]["shadow_filter_max_size"], "0.002");
+  sb->click("preset");
+  const json& open = sb->settle(3);
+  ASSERT_EQ(open["open_popup"], "preset") << open["items"].dump();
+  sb->click("preset/paper");
+  const json& loaded = sb->settle(4);
+  EXPECT_EQ(loaded["params"]["shadow_filter_max_size"], "0.002") << loaded["message"];
+  sb->click("preset name");
+  sb->settle(3);
+  sb->key("ctrl+a");
+  sb->xdo("type --delay 20 narrow");
+  sb->settle(12);  // a character a frame at most: a key's release waits for the next frame
+  sb->click("save as");
+  const json& s = sb->settle(4);
+  EXPECT_TRUE(fs::exists(sb->dir() / "config/penumbra/presets/pmchss/narrow.json")) << s["message"];
+  EXPECT_EQ(s["presets"]["saved"], json::array({"narrow"}));
+  sb->click("preset");
+  sb->settle(3);
+  EXPECT_TRUE(sb->state()["items"].contains("preset/narrow (saved)"));
+}
+
+// Defect 10: pm-CHSS's kernel scale barely changed the picture and nothing said why: the panel
+// says which parameter caps it, with the value, on hover.
+TEST(SandboxXInput, ACappedParameterSaysWhichOneCapsIt) {
+  auto sb = start("capped", kArgs + " --technique pmchss");
+  const json& s = sb->state();
+  ASSERT_TRUE(s["capped"].contains("penumbra_kernel_scale")) << s["capped"];
+  EXPECT_NE(s["capped"]["penumbra_kernel_scale"].get<std::string>().find("shadow_filter_max_size (now 0.04)"),
+            std::string::npos);
+  sb->scroll_into_view("capped:penumbra_kernel_scale");
+  auto [x, y] = sb->centre("capped:penumbra_kernel_scale");
+  sb->move_to(x, y);
+  EXPECT_TRUE(sb->settle(4)["tooltip"].is_array());
+}
+
+// Defect 8: the on-screen inspector counted y from the bottom, the script's from the top. The
+// readout of the pixel under the mouse counts from the top, texel as pixel at 1:1.
+TEST(SandboxXInput, TheInspectorCountsRowsFromTheTop) {
+  auto sb = start("inspector", kArgs + " --technique hard");
+  const json vp = sb->state()["viewport"];
+  sb->move_to(vp[0].get<int>() + 30, vp[1].get<int>() + 40);
+  const json& s = sb->settle(3);
+  ASSERT_TRUE(s["inspector"].is_object()) << s.dump();
+  EXPECT_EQ(s["inspector"]["pixel"], json::array({30, 40}));
+  EXPECT_EQ(s["inspector"]["texel"], json::array({30, 40}));
+  EXPECT_NE(s["inspector"]["text"].get<std::string>().find("(30, 40)"), std::string::npos) << s["inspector"]["text"];
+}
+
+// Defect 12: after window resizes the texture pool kept every size's textures. Once the size
+// settles it holds what it held before.
+TEST(SandboxXInput, ThePoolReturnsToItsCountAfterResizes) {
+  auto sb = start("resize", kArgs + " --technique pcss");
+  const json& first = sb->settle(4);
+  const int textures = first["pool_textures"].get<int>();
+  const int w = first["window"][0].get<int>(), h = first["window"][1].get<int>();
+  for (int i = 1; i <= 4; ++i) {
+    sb->xdo("windowsize " + sb->window() + " " + std::to_string(w - 40 * i) + " " + std::to_string(h - 30 * i));
+    sb->settle(3);
+  }
+  sb->xdo("windowsize " + sb->window() + " " + std::to_string(w) + " " + std::to_string(h));
+  const json& settled = sb->settle(40);
+  EXPECT_EQ(settled["window"], first["window"]);
+  EXPECT_EQ(settled["pool_textures"].get<int>(), textures);
+}
+
+// Defect 11: the first view was hard shadows. It starts on a contact-hardening technique, and
+// the comparison with the reference is one click.
+TEST(SandboxXInput, StartsContactHardeningWithTheReferenceOneClickAway) {
+  auto sb = start("start", kArgs);
+  EXPECT_EQ(sb->state()["technique"], "sspcss");
+  sb->click("compare with reference");
+  const json& s = sb->settle(4);
+  EXPECT_TRUE(s["compare"]["enabled"].get<bool>());
+  EXPECT_EQ(s["compare"]["with"], "reference");
+}
+
+// Defect 9: the error view was unsigned, had no legend, hid the statistics and read out a stray
+// value (the coverage channel). Now: A - B signed, a legend in the corner, the statistics on the
+// view, and the inspector reads one value.
+TEST(SandboxXInput, TheErrorViewIsSignedWithALegendAndStatistics) {
+  auto sb = start("error_view", kArgs + " --technique pcss");
+  sb->click("Compare");
+  sb->settle(3);
+  sb->click("against");
+  sb->settle(3);
+  sb->click("against/hard");  // compares, against a technique as quick as hard shadows
+  sb->settle(6);
+  sb->click("view");
+  sb->settle(3);
+  sb->click("view/signed error (A - B)");
+  json s = sb->settle(6);
+  ASSERT_EQ(s["compare"]["view"], "error");
+  const json vp = s["viewport"];
+  const int vx = vp[0].get<int>(), vy = vp[1].get<int>(), vw = vp[2].get<int>(), vh = vp[3].get<int>();
+  sb->move_to(vx + vw / 2, vy + vh / 2);
+  s = sb->settle(4);
+  ASSERT_TRUE(s["inspector"].is_object());
+  EXPECT_EQ(s["inspector"]["source"], "A - B");
+  const std::string text = s["inspector"]["text"];
+  std::istringstream values(text.substr(text.find('=') + 1));
+  std::vector<std::string> tokens{std::istream_iterator<std::string>(values), {}};
+  EXPECT_EQ(tokens.size(), 1u) << "one value expected: " << text;
+  const fs::path shot = sb->screenshot();
+  int w = 0, h = 0, n = 0;
+  unsigned char* px = stbi_load(shot.string().c_str(), &w, &h, &n, 3);
+  ASSERT_NE(px, nullptr);
+  // The legend's bar in the bottom-right corner runs from saturated blue to saturated red.
+  int blue = 0, red = 0;
+  for (int y = vy + vh - 60; y < vy + vh; ++y)
+    for (int x = vx + vw - 300; x < vx + vw; ++x) {
+      const unsigned char* p = px + 3 * (size_t(y) * w + x);
+      blue += p[2] > 200 && p[0] < 80;
+      red += p[0] > 200 && p[2] < 80;
+    }
+  // The statistics line under the labels: light text on the dark label box, not the frame.
+  int text_pixels = 0;
+  for (int y = vy + 28; y < vy + 42; ++y)
+    for (int x = vx + 8; x < vx + 200; ++x) text_pixels += px[3 * (size_t(y) * w + x)] > 200;
+  stbi_image_free(px);
+  EXPECT_GT(blue, 20);
+  EXPECT_GT(red, 20);
+  EXPECT_GT(text_pixels, 50);
+}
+
+}  // namespace
