@@ -1,5 +1,6 @@
 #include "sandbox/controller.h"
 
+#include "sandbox/viewed_resource.h"
 #include "sandbox/inspector.h"
 
 #include <algorithm>
@@ -374,6 +375,7 @@ Status SandboxController::render_and_compose() {
   ++frames_;
 
   if (viewer_.auto_range && !viewer_.resource.empty() && frames_ % 15 == 1) (void)apply_auto_range(*this);
+  if (viewer_.histogram && !viewer_.resource.empty() && frames_ % 15 == 1) (void)update_histogram(*this);
   return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr, compare_, viewer_, width_, height_,
                                   debug_views_.texel_density});
 }

@@ -69,6 +69,8 @@ Status DisplayPass::draw(const Layer& layer) {
   prog.set("map_mode", static_cast<int>(layer.map));
   prog.set("channel", std::min(layer.channel, layer.texture->info().channels - 1));
   prog.set("value_range", layer.range);
+  prog.set("channel_mask", glm::vec4(layer.channel_mask & 1u, (layer.channel_mask >> 1) & 1u, (layer.channel_mask >> 2) & 1u,
+                                     (layer.channel_mask >> 3) & 1u));
   prog.set("linearize_depth", layer.linearize_depth ? 1 : 0);
   prog.set("near_far", layer.near_far);
   prog.set("coverage_in_g", layer.coverage_in_g ? 1 : 0);

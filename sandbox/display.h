@@ -25,7 +25,11 @@ struct ViewerSettings {
   Map map = Map::grey;
   Placement placement = Placement::inset;
   float min = 0.0f, max = 1.0f;  // value range mapped to [0, 1] (world units for linear depth)
-  int channel = 0;               // grey/heat read this channel
+  int channel = 0;               // grey/heat/signed read this channel
+  unsigned channel_mask = 0x7;   // colour map: the channels shown (bit 0 red .. bit 3 alpha);
+                                 // alpha alone shows alpha as grey
+  bool histogram = true;         // the panel plots the viewed channel's histogram (every ~15 frames)
+  std::vector<float> counts;     // that histogram over [min, max] (view_mapping.h's histogram())
   bool linearize_depth = true;   // screen-size depth -> view distance with the camera's near/far
   bool auto_range = false;       // min/max follow the resource's values (every ~15 frames)
   // Zoom and pan of what fills the frame: the final image (both sides of a compare split alike,
@@ -43,6 +47,7 @@ class DisplayPass {
     glm::vec4 uv_rect{0, 0, 1, 1};   // part of the texture shown: origin, extent
     ViewerSettings::Map map = ViewerSettings::Map::color;
     int channel = 0;
+    unsigned channel_mask = 0x7;
     glm::vec2 range{0.0f, 1.0f};
     bool linearize_depth = false;
     glm::vec2 near_far{0.05f, 200.0f};  // world units

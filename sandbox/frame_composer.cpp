@@ -64,6 +64,7 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
       v.texture = t;
       v.map = in.viewer.map;
       v.channel = in.viewer.channel;
+      v.channel_mask = in.viewer.channel_mask;
       v.range = {in.viewer.min, in.viewer.max};
       v.linearize_depth = in.viewer.linearize_depth && t->info().is_depth && t->width() == in.width &&
                           t->height() == in.height;

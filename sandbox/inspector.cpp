@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sandbox/viewed_resource.h"
 #include "technique/frame_graph.h"
 #include "util/file_write.h"
 #include "util/row_order.h"
@@ -14,11 +15,6 @@
 namespace penumbra::sandbox {
 
 namespace {
-
-float linear_depth(float d, float n, float f) {
-  const float z = d * 2.0f - 1.0f;
-  return 2.0f * n * f / (f + n - z * (f - n));
-}
 
 std::array<float, 4> read_texel(const gl::Texture& t, glm::ivec2 texel) {
   const gl::FormatInfo& f = t.info();
@@ -29,9 +25,6 @@ std::array<float, 4> read_texel(const gl::Texture& t, glm::ivec2 texel) {
   return v;
 }
 
-bool screen_depth(const gl::Texture& t, const SandboxController& c) {
-  return t.info().is_depth && t.width() == c.width() && t.height() == c.height();
-}
 
 }  // namespace
 
@@ -114,39 +107,6 @@ Status write_inspection(SandboxController& c, int x, int y, const std::string& p
   j["linear_depth"] = r->linear_depth ? nlohmann::json(*r->linear_depth) : nlohmann::json(nullptr);
   j["text"] = readout_text(*r);
   return write_file_whole(path, j.dump(2) + "\n");
-}
-
-Result<glm::vec2> resource_range(SandboxController& c) {
-  const ViewerSettings& v = c.viewer();
-  if (v.resource.empty()) return make_error("auto range: no resource is viewed");
-  gl::Texture* t = c.session().executor().resource(v.resource);
-  if (!t) return make_error("auto range: '" + v.resource + "' is not produced by the current graph");
-  const std::vector<float> texels = t->read();
-  const int n = t->info().channels;
-  const int ch = std::clamp(v.channel, 0, n - 1);
-  const bool depth = v.linearize_depth && screen_depth(*t, c);
-  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-  for (size_t i = static_cast<size_t>(ch); i < texels.size(); i += static_cast<size_t>(n)) {
-    float x = texels[i];
-    if (!std::isfinite(x)) continue;
-    if (depth) {
-      if (x >= 1.0f) continue;  // background at the far plane
-      x = linear_depth(x, c.camera().near_plane, c.camera().far_plane);
-    }
-    lo = std::min(lo, x);
-    hi = std::max(hi, x);
-  }
-  if (!(lo <= hi)) return make_error("auto range: '" + v.resource + "' holds no finite value");
-  return glm::vec2(lo, hi);
-}
-
-Status apply_auto_range(SandboxController& c) {
-  Result<glm::vec2> r = resource_range(c);
-  if (!r) return r.error();
-  const float pad = r->y > r->x ? 0.0f : 1e-6f * std::max(1.0f, std::abs(r->x));
-  c.viewer().min = r->x - pad;
-  c.viewer().max = r->y + pad;
-  return {};
 }
 
 }  // namespace penumbra::sandbox

@@ -35,10 +35,4 @@ std::string readout_text(const PixelReadout& r);
 // "linear_depth" (screen depth only)} into `path` (the scripts' `inspect` step).
 Status write_inspection(SandboxController& c, int x, int y, const std::string& path);
 
-// Min and max of the viewed resource's channel (view distance for screen depth; texels at the
-// far plane and non-finite ones skipped); an error when nothing is viewed.
-Result<glm::vec2> resource_range(SandboxController& c);
-// resource_range into the viewer's min/max (a flat resource gets a range of 1e-6 around it).
-Status apply_auto_range(SandboxController& c);
-
 }  // namespace penumbra::sandbox

@@ -31,6 +31,7 @@ constexpr StepName kSteps[] = {
     {"expect_no_gl_error", StepKind::expect_no_gl_error}, {"ground", StepKind::ground},
     {"metrics", StepKind::metrics},   {"inspect", StepKind::inspect},
     {"graph", StepKind::graph},       {"debug", StepKind::debug},
+    {"save_view", StepKind::save_view},
 };
 
 std::string valid_step_names() {
@@ -147,6 +148,17 @@ void parse_body(ScriptStep& s, const json& v) {
       if (s.inspect.out.empty()) problem("inspect.out must name the JSON file to write");
       break;
     }
+    case StepKind::save_view: {
+      // {"save_view": {"format": "png"|"pfm", "dir": "out"}}: the viewed resource, named
+      // RESOURCE_frameN.png/.pfm (viewed_resource.h).
+      only_keys(v, {"format", "dir"}, "save_view");
+      s.format = v.contains("format") ? need_string(v["format"], "save_view.format") : "";
+      if (s.format != "png" && s.format != "pfm") problem("save_view.format must be \"png\" or \"pfm\", got \"" + shortened(s.format) + "\"");
+      s.text = v.contains("dir") ? need_string(v["dir"], "save_view.dir") : ".";
+      std::error_code ec;
+      if (!std::filesystem::is_directory(s.text, ec)) problem("save_view: directory '" + shortened(s.text) + "' does not exist");
+      break;
+    }
     case StepKind::debug:
       only_keys(v, {"light_frustum", "blocker_region", "texel_density"}, "debug");
       for (const char* key : {"light_frustum", "blocker_region", "texel_density"})
@@ -218,7 +230,7 @@ void parse_body(ScriptStep& s, const json& v) {
         s.view.resource = v.get<std::string>();
         break;
       }
-      only_keys(v, {"resource", "map", "placement", "min", "max", "channel", "zoom", "center", "auto_range"}, "view");
+      only_keys(v, {"resource", "map", "placement", "min", "max", "channel", "channels", "zoom", "center", "auto_range"}, "view");
       if (v.contains("zoom")) {
         s.view.zoom = need_number(v["zoom"], "view.zoom");
         if (!(*s.view.zoom >= 1.0f && *s.view.zoom <= 64.0f)) problem("view.zoom must be in [1, 64], got " + echo(v["zoom"]));
@@ -247,6 +259,17 @@ void parse_body(ScriptStep& s, const json& v) {
       if (v.contains("min")) s.view.min = need_number(v["min"], "view.min");
       if (v.contains("max")) s.view.max = need_number(v["max"], "view.max");
       if (v.contains("channel")) s.view.channel = need_int(v["channel"], "view.channel", 0, 3);
+      if (v.contains("channels")) {
+        const std::string letters = need_string(v["channels"], "view.channels");
+        unsigned mask = 0;
+        for (char ch : letters) {
+          const size_t bit = std::string("rgba").find(ch);
+          if (bit == std::string::npos) problem("view.channels must be letters of \"rgba\", got \"" + shortened(letters) + "\"");
+          else mask |= 1u << bit;
+        }
+        if (mask == 0) problem("view.channels must name at least one of r, g, b, a");
+        s.view.channel_mask = mask;
+      }
       break;
   }
 }

@@ -24,7 +24,7 @@ namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error, ground, metrics, inspect, graph, debug
+  resize, expect_no_gl_error, ground, metrics, inspect, graph, debug, save_view
 };
 const char* step_kind_name(StepKind kind);
 
@@ -56,6 +56,7 @@ struct ViewStep {
   std::string placement; // "full" | "inset"; empty = unchanged
   std::optional<float> min, max;
   std::optional<int> channel;
+  std::optional<unsigned> channel_mask;  // "channels": "rgb", "a", ... (colour map)
   std::optional<float> zoom;           // 1..64
   std::optional<glm::vec2> center;     // uv at the frame's middle
   std::optional<bool> auto_range;
@@ -72,7 +73,9 @@ struct ScriptStep {
   StepKind kind = StepKind::wait;
   int index = 0;     // position in the script
   std::string source;  // the script file, named by errors
-  std::string text;  // scene, technique, screenshot or metrics path, reset target ("all" or a parameter)
+  std::string text;  // scene, technique, screenshot or metrics path, reset target ("all" or a parameter),
+                     // save_view's folder
+  std::string format;  // save_view: "png" | "pfm"
   std::vector<std::pair<std::string, std::string>> assignments;  // set: name -> value text
   int number = 0;    // wait frames, shadow size (texels)
   bool flag = false;  // ground: the switch

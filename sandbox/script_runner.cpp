@@ -1,5 +1,6 @@
 #include "sandbox/script_runner.h"
 
+#include "sandbox/viewed_resource.h"
 #include "sandbox/compare_metrics.h"
 #include "sandbox/graph_export.h"
 #include "sandbox/inspector.h"
@@ -51,6 +52,10 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
     case StepKind::ground: return c.set_ground(step.flag);
     case StepKind::metrics: return write_metrics(c, step.text);
     case StepKind::graph: return write_graph_view(c, step.text);
+    case StepKind::save_view: {
+      Result<std::string> path = save_viewed_resource(c, step.text, *parse_view_format(step.format));
+      return path ? Status{} : Status(path.error());
+    }
     case StepKind::debug:
       if (step.light_frustum) c.debug_views().light_frustum = *step.light_frustum;
       if (step.blocker_region) c.debug_views().blocker_region = *step.blocker_region;
@@ -90,6 +95,7 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
       if (std::optional<int> map = colour_map_index(step.view.map)) v.map = static_cast<ViewerSettings::Map>(*map);
       if (step.view.placement == "full") v.placement = ViewerSettings::Placement::full;
       if (step.view.placement == "inset") v.placement = ViewerSettings::Placement::inset;
+      if (step.view.channel_mask) v.channel_mask = *step.view.channel_mask;
       if (step.view.min) v.min = *step.view.min;
       if (step.view.max) v.max = *step.view.max;
       if (step.view.channel) v.channel = *step.view.channel;

@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include "sandbox/viewed_resource.h"
 #include "sandbox/compare_metrics.h"
 #include "sandbox/graph_view.h"
 #include "sandbox/inspector.h"
@@ -285,7 +286,7 @@ void viewer_panel(SandboxController& c, UiState& ui) {
   if (!open) return;
   ViewerSettings& v = c.viewer();
   const char* shown = v.resource.empty() ? "(off)" : v.resource.c_str();
-  if (begin_combo(ui.probe, "resource", shown)) {
+  if (begin_combo(ui.probe, "resource", shown, ImGuiComboFlags_HeightLarge)) {  // graphs hold 20 or more
     if (selectable(ui.probe, "resource", "(off)", v.resource.empty())) (void)c.view_resource("");
     for (const std::string& n : c.session().executor().resource_names())
       if (selectable(ui.probe, "resource", n, n == v.resource)) (void)c.view_resource(n);
@@ -303,7 +304,40 @@ void viewer_panel(SandboxController& c, UiState& ui) {
   ImGui::Checkbox("follow", &v.auto_range);
   tooltip("keep the range at the resource's min/max (every 15 frames)");
   colour_bar(v);
-  ImGui::SliderInt("channel", &v.channel, 0, 3);
+  if (v.map == ViewerSettings::Map::color) {
+    // Per-channel toggles, as in RenderDoc: alpha alone is shown as grey.
+    const char* names[] = {"R", "G", "B", "A"};
+    for (unsigned ch = 0; ch < 4; ++ch) {
+      bool on = (v.channel_mask >> ch) & 1u;
+      if (ch > 0) ImGui::SameLine();
+      if (ImGui::Checkbox(names[ch], &on)) v.channel_mask = on ? v.channel_mask | (1u << ch) : v.channel_mask & ~(1u << ch);
+      probe_item(ui.probe, std::string("channel ") + names[ch]);
+    }
+  } else {
+    ImGui::SliderInt("channel", &v.channel, 0, 3);
+  }
+  ImGui::Checkbox("histogram", &v.histogram);
+  tooltip("the viewed channel's values over the range above, 64 bins (outside values in the end bins), every 15 frames");
+  if (v.histogram && !v.counts.empty()) {
+    const float top = *std::max_element(v.counts.begin(), v.counts.end());
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%.4g .. %.4g, highest bin %.0f", v.min, v.max, top);
+    ImGui::PlotHistogram("##histogram", v.counts.data(), static_cast<int>(v.counts.size()), 0, overlay, 0.0f,
+                         std::max(top, 1.0f), ImVec2(ImGui::GetContentRegionAvail().x, 60));
+    probe_item(ui.probe, "histogram plot");
+  }
+  ImGui::InputText("save to", ui.save_dir, sizeof ui.save_dir);
+  probe_item(ui.probe, "save to");
+  tooltip("folder for saved views: RESOURCE_frameN.png (as shown) or .pfm (float values)");
+  for (const auto& [label, format] : {std::pair{"save PNG", ViewFormat::png}, std::pair{"save PFM", ViewFormat::pfm}}) {
+    if (format == ViewFormat::pfm) ImGui::SameLine();
+    if (ImGui::Button(label)) {
+      Result<std::string> path = save_viewed_resource(c, ui.save_dir, format);
+      if (path) ui.post("saved " + *path, ImGui::GetTime());
+      else (void)c.note(path.error());
+    }
+    probe_item(ui.probe, label);
+  }
   float zoom = v.zoom.zoom;
   if (ImGui::SliderFloat("zoom", &zoom, 1.0f, kMaxZoom, "%.2gx", ImGuiSliderFlags_Logarithmic)) {
     v.zoom.zoom = zoom;
@@ -313,17 +347,17 @@ void viewer_panel(SandboxController& c, UiState& ui) {
   ImGui::SameLine();
   if (ImGui::SmallButton("1:1")) v.zoom = {};
   ImGui::Checkbox("linearise depth", &v.linearize_depth);
+  tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
   SandboxController::DebugViews& dv = c.debug_views();
   ImGui::Checkbox("light frustum", &dv.light_frustum);
   tooltip("the shadow map's frustum (yellow) and the emitter disk with its direction (orange), drawn over the scene");
   ImGui::SameLine();
   ImGui::Checkbox("blocker search", &dv.blocker_region);
+  tooltip("for the pixel under the cursor: its cone to the emitter in the scene, and (viewing a shadow-map-sized "
+          "resource) the region of the map where its blockers can be");
   ImGui::SameLine();
   ImGui::Checkbox("texel density", &dv.texel_density);
   tooltip("shadow-map texels per frame pixel on the receivers, log2 heat: blue 1/16 (blocky), green 1, red 16 (aliased)");
-  tooltip("for the pixel under the cursor: its cone to the emitter in the scene, and (viewing a shadow-map-sized "
-          "resource) the region of the map where its blockers can be");
-  tooltip("screen-size depth shown as view distance (world units), using the camera's near/far");
 }
 
 void compare_panel(SandboxController& c, UiState& ui) {

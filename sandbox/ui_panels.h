@@ -15,6 +15,7 @@ struct UiState {
   char preset_name[64] = "my-preset";  // saved into user_preset_dir() (sandbox/user_presets.h)
   char screenshot_path[512] = "penumbra-screenshot.png";
   char metrics_path[512] = "penumbra-metrics.json";
+  char save_dir[512] = ".";  // the resource viewer's "save PNG / PFM"
   bool screenshot_requested = false;  // set by the button, served by the host after rendering
   bool escape = false;                // Esc this frame: closes the topmost open thing
   bool graph_open = false;            // the Graph section (closed at start: it is tall)

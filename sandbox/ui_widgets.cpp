@@ -15,9 +15,9 @@ void probe_item(UiProbe& probe, const std::string& id) {
   probe.items[id] = rect_of(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
 
-bool begin_combo(UiProbe& probe, const char* label, const char* preview) {
+bool begin_combo(UiProbe& probe, const char* label, const char* preview, int flags) {
   probe.combos.insert(label);
-  const bool open = ImGui::BeginCombo(label, preview);
+  const bool open = ImGui::BeginCombo(label, preview, flags);
   if (!open) {
     probe_item(probe, label);  // while open, the last item is the list's window, not the combo
     return false;
@@ -30,7 +30,7 @@ bool begin_combo(UiProbe& probe, const char* label, const char* preview) {
 
 bool selectable(UiProbe& probe, const char* combo, const std::string& text, bool selected) {
   const bool clicked = ImGui::Selectable(text.c_str(), selected);
-  probe_item(probe, std::string(combo) + "/" + text);
+  if (ImGui::IsItemVisible()) probe_item(probe, std::string(combo) + "/" + text);  // not scrolled out of the list
   return clicked;
 }
 

@@ -34,7 +34,7 @@ struct UiProbe {
 // Records the last item's rect under `id`.
 void probe_item(UiProbe& probe, const std::string& id);
 // ImGui::BeginCombo that records itself (its rect while closed, its list's window while open).
-bool begin_combo(UiProbe& probe, const char* label, const char* preview);
+bool begin_combo(UiProbe& probe, const char* label, const char* preview, int flags = 0);
 // An entry of an open combo's list, recorded as "COMBO/TEXT" (tests click list entries).
 bool selectable(UiProbe& probe, const char* combo, const std::string& text, bool selected);
 // A combo over fixed choices; true when the choice changed.

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+
+#include "metrics/heat_map.h"
 
 namespace penumbra::sandbox {
 
@@ -9,6 +12,30 @@ std::optional<int> colour_map_index(const std::string& name) {
   for (int i = 0; i < int(std::size(kColourMapNames)); ++i)
     if (name == kColourMapNames[i]) return i;
   return std::nullopt;
+}
+
+glm::vec3 displayed_colour(int map, const glm::vec4& texel, float value, unsigned channel_mask, float lo, float hi) {
+  const float scale = 1.0f / std::max(hi - lo, 1e-12f);
+  if (map == 0) {
+    const glm::vec3 mask(channel_mask & 1u, (channel_mask >> 1) & 1u, (channel_mask >> 2) & 1u);
+    const glm::vec3 rgb = mask == glm::vec3(0.0f) ? glm::vec3(texel.a * float((channel_mask >> 3) & 1u)) : glm::vec3(texel) * mask;
+    return glm::clamp((rgb - lo) * scale, 0.0f, 1.0f);
+  }
+  const float t = std::clamp((value - lo) * scale, 0.0f, 1.0f);
+  if (map == 2) return glm::vec3(metrics::heat_color(t)) / 255.0f;
+  if (map == 3) return diverging_color(t);
+  return glm::vec3(t);
+}
+
+std::vector<float> histogram(const std::vector<float>& values, float lo, float hi, int bins) {
+  std::vector<float> counts(static_cast<size_t>(std::max(bins, 1)), 0.0f);
+  const float width = std::max(hi - lo, 1e-12f);
+  for (float v : values) {
+    if (!std::isfinite(v)) continue;
+    const int b = std::clamp(static_cast<int>(std::floor((v - lo) / width * float(counts.size()))), 0, int(counts.size()) - 1);
+    counts[static_cast<size_t>(b)] += 1.0f;
+  }
+  return counts;
 }
 
 glm::vec3 diverging_color(float t) {

@@ -6,6 +6,7 @@
 // Rectangles are (x, y, width, height) in GL pixels (origin bottom-left) or uv.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -19,6 +20,13 @@ inline constexpr const char* kColourMapNames[] = {"color", "grey", "heat", "sign
 std::optional<int> colour_map_index(const std::string& name);
 // The "signed" map at t in [0, 1] (0.5 is zero), RGB 0..1: the legend's colours.
 glm::vec3 diverging_color(float t);
+// The colour the display shows for a texel (display.frag.glsl's mapping, for saved PNGs): map
+// index into kColourMapNames, `value` the texel's channel as shown (depth already linear),
+// channel_mask as ViewerSettings's, [lo, hi] the range mapped to [0, 1].
+glm::vec3 displayed_colour(int map, const glm::vec4& texel, float value, unsigned channel_mask, float lo, float hi);
+// Counts of `values` in `bins` equal bins over [lo, hi]; values outside go to the end bins,
+// non-finite ones nowhere.
+std::vector<float> histogram(const std::vector<float>& values, float lo, float hi, int bins);
 
 struct ViewZoom {
   float zoom = 1.0f;               // 1 = the whole image; 2 = half of it in each direction

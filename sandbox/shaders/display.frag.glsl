@@ -5,7 +5,8 @@
 
 uniform sampler2D src;
 uniform int map_mode;       // 0 colour (rgb), 1 grey, 2 heat, 3 signed (one channel; ViewerSettings::Map)
-uniform int channel;        // 0..3: which channel grey/heat read
+uniform int channel;        // 0..3: which channel grey/heat/signed read
+uniform vec4 channel_mask;  // colour: 1 for each channel shown; alpha alone is shown as grey
 uniform vec2 value_range;   // [min, max] mapped to [0, 1]
 uniform int linearize_depth;  // 1: src holds window-space depth of the camera's projection
 uniform vec2 near_far;      // camera near/far planes, world units
@@ -27,8 +28,9 @@ void main() {
     return;
   }
   float scale = 1.0 / max(value_range.y - value_range.x, 1e-12);
-  if (map_mode == 0) {
-    frag_color = vec4(clamp((texel.rgb - value_range.x) * scale, 0.0, 1.0), 1.0);
+  if (map_mode == 0) {  // displayed_colour() in sandbox/view_mapping.cpp writes PNGs alike
+    vec3 rgb = channel_mask.rgb == vec3(0.0) ? vec3(texel.a * channel_mask.a) : texel.rgb * channel_mask.rgb;
+    frag_color = vec4(clamp((rgb - value_range.x) * scale, 0.0, 1.0), 1.0);
     return;
   }
   float v = texel[channel];

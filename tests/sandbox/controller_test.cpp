@@ -4,13 +4,17 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <numeric>
 
 #include "sandbox/controller.h"
 #include "sandbox/param_applicability.h"
+#include "sandbox/viewed_resource.h"
 #include "technique/preset.h"
 #include "util/file_write.h"
 #include "image_stats.h"
 #include "test_support/gl_context.h"
+#include "test_support/temp_dir.h"
 #include "techniques/builtin_techniques.h"
 #include "tiny_technique.h"
 
@@ -42,6 +46,43 @@ struct Fixture : ::testing::Test {
   exec::PassLibrary library;
   std::unique_ptr<SandboxController> controller;
 };
+
+// The resource viewer's read-backs: the histogram counts every texel, a PFM holds the viewed
+// channel's floats bit for bit (rows bottom to top), a PNG the display's colours at the
+// resource's size; both named after the resource and the frame.
+TEST_F(Fixture, ViewedResourceHistogramAndSavedFiles) {
+  ASSERT_TRUE(controller->view_resource("shadow_mask"));
+  controller->viewer().map = ViewerSettings::Map::grey;
+  ASSERT_TRUE(controller->render_frame());
+  ASSERT_TRUE(update_histogram(*controller));
+  const std::vector<float>& counts = controller->viewer().counts;
+  ASSERT_EQ(counts.size(), size_t(kHistogramBins));
+  EXPECT_EQ(std::accumulate(counts.begin(), counts.end(), 0.0f), 96.0f * 64.0f);
+  const std::filesystem::path dir = test::fresh_temp_dir("viewed_resource");
+  Result<std::string> pfm = save_viewed_resource(*controller, dir.string(), ViewFormat::pfm);
+  ASSERT_TRUE(pfm) << pfm.error().to_string();
+  EXPECT_EQ(std::filesystem::path(*pfm).filename(), "shadow_mask_frame" + std::to_string(controller->frames()) + ".pfm");
+  std::ifstream in(*pfm, std::ios::binary);
+  std::string magic, scale;
+  int w = 0, h = 0;
+  in >> magic >> w >> h >> scale;
+  in.get();
+  EXPECT_EQ(magic, "Pf");
+  EXPECT_EQ(w, 96);
+  EXPECT_EQ(h, 64);
+  EXPECT_EQ(scale, "-1");
+  std::vector<float> values(96 * 64);
+  in.read(reinterpret_cast<char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
+  const std::vector<float> texels = mask();  // R16F: one channel, GL's rows
+  EXPECT_EQ(values, texels);
+  Result<std::string> png = save_viewed_resource(*controller, dir.string(), ViewFormat::png);
+  ASSERT_TRUE(png) << png.error().to_string();
+  const auto stats = sandbox_test::png_stats(*png);
+  EXPECT_EQ(stats.width, 96);
+  EXPECT_EQ(stats.height, 64);
+  EXPECT_FALSE(save_viewed_resource(*controller, (dir / "absent").string(), ViewFormat::png));
+  std::filesystem::remove_all(dir);
+}
 
 TEST_F(Fixture, UniformChangeUpdatesTheValueWithoutRecompiling) {
   ASSERT_TRUE(controller->render_frame());

@@ -194,6 +194,23 @@ TEST(Script, InspectAndViewZoomSteps) {
   EXPECT_FALSE(parse_script(R"([{"metrics": ""}])", "s.json"));
 }
 
+TEST(Script, SaveViewAndChannelSteps) {
+  auto steps = parse_script(R"([{"view": {"resource": "color", "map": "signed", "channels": "ra"}},
+                               {"save_view": {"format": "pfm", "dir": "."}}, {"save_view": {"format": "png"}}])", "s.json");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  EXPECT_EQ((*steps)[0].view.map, "signed");
+  EXPECT_EQ(*(*steps)[0].view.channel_mask, 0x9u);
+  EXPECT_EQ((*steps)[1].kind, StepKind::save_view);
+  EXPECT_EQ((*steps)[1].format, "pfm");
+  EXPECT_EQ((*steps)[2].text, ".");
+  for (const char* bad : {R"([{"save_view": {"format": "exr"}}])", R"([{"save_view": {"format": "png", "dir": "no/such/dir"}}])",
+                          R"([{"save_view": {"format": "png", "path": "x.png"}}])", R"([{"view": {"channels": "rgbx"}}])",
+                          R"([{"view": {"channels": ""}}])", R"([{"view": {"map": "rainbow"}}])"}) {
+    auto s = parse_script(bad, "s.json");
+    EXPECT_FALSE(s) << bad;
+  }
+}
+
 TEST(Options, SceneStagingOptionsAreTheClis) {
   auto o = parse_sandbox_options({"--camera", "1,2,3:0,0,0", "--light-dir", "0,-2,0", "--light-size", "0.5",
                                   "--ground", "off"});

@@ -3,6 +3,9 @@
 // a frame pixel maps back to the texel drawn there.
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <vector>
+
 #include "sandbox/view_mapping.h"
 
 namespace penumbra::sandbox {
@@ -57,6 +60,26 @@ TEST(ViewMapping, PixelToTexelFollowsRectAndZoom) {
   EXPECT_EQ(pixel_to_texel({216, 100}, {0, 0, 400, 200}, uv, 100, 50), glm::ivec2(51, 25));
   // Letterboxed: outside the fitted rect there is no texel.
   EXPECT_FALSE(pixel_to_texel({5, 5}, {100, 0, 200, 200}, {0, 0, 1, 1}, 64, 64));
+}
+
+TEST(ViewMapping, HistogramCountsIntoEqualBinsWithOutsideValuesAtTheEnds) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> counts = histogram({0.0f, 0.1f, 0.26f, 0.5f, 0.99f, 1.0f, -3.0f, 7.0f, nan}, 0.0f, 1.0f, 4);
+  EXPECT_EQ(counts, (std::vector<float>{3, 1, 1, 3}));  // -3 joins the first bin, 7 and 1.0 the last; NaN none
+}
+
+TEST(ViewMapping, DisplayedColourFollowsTheMapRangeAndChannels) {
+  const glm::vec4 texel(0.2f, 0.4f, 0.6f, 0.8f);
+  EXPECT_EQ(displayed_colour(1, texel, 0.5f, 0x7, 0.0f, 1.0f), glm::vec3(0.5f));   // grey
+  EXPECT_EQ(displayed_colour(1, texel, 0.75f, 0x7, 0.5f, 1.0f), glm::vec3(0.5f));  // range
+  EXPECT_EQ(displayed_colour(0, texel, 0.0f, 0x5, 0.0f, 1.0f), glm::vec3(0.2f, 0.0f, 0.6f));  // R and B
+  EXPECT_EQ(displayed_colour(0, texel, 0.0f, 0x8, 0.0f, 1.0f), glm::vec3(0.8f));  // alpha alone, grey
+  EXPECT_EQ(displayed_colour(3, texel, -0.25f, 0x7, -0.25f, 0.25f), diverging_color(0.0f));  // signed: blue end
+  EXPECT_EQ(displayed_colour(3, texel, 0.0f, 0x7, -0.25f, 0.25f), glm::vec3(1.0f));  // zero is white
+  EXPECT_GT(diverging_color(0.0f).b, 0.9f);
+  EXPECT_GT(diverging_color(1.0f).r, 0.9f);
+  EXPECT_EQ(colour_map_index("signed"), 3);
+  EXPECT_FALSE(colour_map_index("rainbow"));
 }
 
 }  // namespace

@@ -264,6 +264,42 @@ TEST(SandboxXInput, StartsContactHardeningWithTheReferenceOneClickAway) {
   EXPECT_EQ(s["compare"]["with"], "reference");
 }
 
+// The resource viewer as RenderDoc users expect: pick a resource from the list, its histogram
+// appears, channel toggles in the colour map, and "save PNG"/"save PFM" write files named after
+// the resource and the frame.
+TEST(SandboxXInput, TheResourceViewerShowsAHistogramAndSavesTheResource) {
+  auto sb = start("viewer", kArgs + " --technique pcss");
+  sb->click("Resource viewer");
+  sb->settle(3);
+  sb->click("resource");
+  sb->settle(3);
+  sb->click("resource/shadow_mask");
+  json s = sb->settle(20);  // the histogram is read back every 15 frames
+  ASSERT_EQ(s["viewer"]["resource"], "shadow_mask");
+  ASSERT_TRUE(s["items"].contains("histogram plot")) << s["items"].dump();
+  EXPECT_GT(s["items"]["histogram plot"][2].get<float>(), 300.0f);
+  sb->click("save PNG");
+  sb->settle(3);
+  sb->click("save PFM");
+  sb->settle(3);
+  int png = 0, pfm = 0;
+  for (const auto& e : fs::directory_iterator(sb->dir())) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("shadow_mask_frame", 0) != 0) continue;
+    png += e.path().extension() == ".png";
+    pfm += e.path().extension() == ".pfm";
+  }
+  EXPECT_EQ(png, 1);
+  EXPECT_EQ(pfm, 1);
+  sb->click("colour map");
+  sb->settle(3);
+  sb->click("colour map/colour");
+  sb->settle(3);
+  sb->click("channel G");  // off: red and blue remain
+  sb->settle(3);
+  EXPECT_TRUE(sb->state()["items"].contains("channel A"));
+}
+
 // Defect 9: the error view was unsigned, had no legend, hid the statistics and read out a stray
 // value (the coverage channel). Now: A - B signed, a legend in the corner, the statistics on the
 // view, and the inspector reads one value.
