@@ -345,7 +345,45 @@ std::vector<Error> SandboxController::shader_errors() const {
   return all;
 }
 
+Status SandboxController::start_sequence(const SequenceSpec& spec) {
+  if (Status s = check_sequence(spec); !s) return note(s);
+  if (!primary_->has_scene()) return note(make_error("no scene to record"));
+  recording_ = Recording{spec, 0, camera(), light(), primary_->scene().bounds.center()};
+  return note({});
+}
+
+void SandboxController::stop_sequence() {
+  if (!recording_) return;
+  camera() = recording_->camera;
+  light() = recording_->light;
+  recording_.reset();
+}
+
+void SandboxController::pose_for_sequence() {
+  const Recording& r = *recording_;
+  const float degrees = r.spec.degrees * float(r.next) / float(r.spec.frames);
+  if (r.spec.path == SequenceSpec::Path::orbit) camera() = orbited(r.camera, r.centre, degrees);
+  else light() = turned(r.light, r.centre, degrees);
+}
+
+Status SandboxController::save_sequence_frame() {
+  Recording& r = *recording_;
+  const std::string path = sequence_frame_path(r.spec, r.next);
+  if (Status s = save_presentation_png(path); !s) {
+    stop_sequence();
+    return s;
+  }
+  if (++r.next == r.spec.frames) {
+    const std::string done = "recorded " + std::to_string(r.spec.frames) + " frames into " + r.spec.dir;
+    stop_sequence();
+    message_.clear();
+    sequence_note_ = done;
+  }
+  return {};
+}
+
 Status SandboxController::render_frame() {
+  if (recording_) pose_for_sequence();
   Status s = render_and_compose();
   if (s) {
     refused_.clear();
@@ -354,6 +392,9 @@ Status SandboxController::render_frame() {
     refused_ = s.error().to_string();
     display_.show_refused();
   }
+  // A refused frame is saved as refused: the sequence keeps its numbering.
+  if (recording_)
+    if (Status saved = save_sequence_frame(); !saved) return saved;
   return s;
 }
 

@@ -27,6 +27,7 @@
 #include "sandbox/compare.h"
 #include "sandbox/display.h"
 #include "sandbox/frame_composer.h"
+#include "sandbox/frame_sequence.h"
 #include "exec/pass.h"
 #include "metrics/mask_metrics.h"
 #include "technique/technique.h"
@@ -128,6 +129,18 @@ class SandboxController {
     if (compare_.enabled && secondary_ && frames_ > 0) update_compare_stats();
   }
 
+  // --- frame sequences (sandbox/frame_sequence.h) -------------------------------------------
+  // From the next frame on, each render_frame() poses the camera or light for frame i of the
+  // sequence and saves the composed frame to sequence_frame_path(spec, i); after the last one
+  // the pose the sequence started from is back. An error (and nothing recorded) for a bad spec.
+  Status start_sequence(const SequenceSpec& spec);
+  void stop_sequence();  // restores the starting pose
+  bool recording() const { return recording_.has_value(); }
+  int sequence_saved() const { return recording_ ? recording_->next : 0; }
+  int sequence_frames() const { return recording_ ? recording_->spec.frames : 0; }
+  // "recorded N frames into DIR" once the last sequence finished; "" before.
+  const std::string& sequence_note() const { return sequence_note_; }
+
   // --- frames -------------------------------------------------------------------------------
   Status resize(int width, int height);
   int width() const { return width_; }
@@ -165,6 +178,18 @@ class SandboxController {
   Status configure_secondary();
   Status render_and_compose();
   void update_compare_stats();
+  void pose_for_sequence();
+  Status save_sequence_frame();
+
+  struct Recording {
+    SequenceSpec spec;
+    int next = 0;  // the frame rendered next
+    scene::Camera camera;  // the starting pose
+    scene::Light light;
+    glm::vec3 centre{0.0f};
+  };
+  std::optional<Recording> recording_;
+  std::string sequence_note_;  // "recorded N frames into DIR" after the last one
 
   const technique::TechniqueRegistry& registry_;
   mutable std::map<std::string, std::string> descriptions_;

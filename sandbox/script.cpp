@@ -31,7 +31,7 @@ constexpr StepName kSteps[] = {
     {"expect_no_gl_error", StepKind::expect_no_gl_error}, {"ground", StepKind::ground},
     {"metrics", StepKind::metrics},   {"inspect", StepKind::inspect},
     {"graph", StepKind::graph},       {"debug", StepKind::debug},
-    {"save_view", StepKind::save_view},
+    {"save_view", StepKind::save_view}, {"record", StepKind::record},
 };
 
 std::string valid_step_names() {
@@ -157,6 +157,20 @@ void parse_body(ScriptStep& s, const json& v) {
       s.text = v.contains("dir") ? need_string(v["dir"], "save_view.dir") : ".";
       std::error_code ec;
       if (!std::filesystem::is_directory(s.text, ec)) problem("save_view: directory '" + shortened(s.text) + "' does not exist");
+      break;
+    }
+    case StepKind::record: {
+      // {"record": {"frames": 24, "path": "orbit"|"light", "degrees": 360, "dir": "seq"}}
+      only_keys(v, {"frames", "path", "degrees", "dir"}, "record");
+      if (v.contains("frames")) s.sequence.frames = need_int(v["frames"], "record.frames", 1, kMaxSequenceFrames);
+      if (v.contains("path")) {
+        Result<SequenceSpec::Path> path = parse_sequence_path(need_string(v["path"], "record.path"));
+        if (!path) problem("record: " + path.error().message);
+        else s.sequence.path = *path;
+      }
+      if (v.contains("degrees")) s.sequence.degrees = need_number(v["degrees"], "record.degrees");  // range: check_sequence
+      s.sequence.dir = v.contains("dir") ? need_string(v["dir"], "record.dir") : "";
+      if (Status st = check_sequence(s.sequence); !st) problem("record: " + st.error().message);
       break;
     }
     case StepKind::debug:

@@ -18,13 +18,14 @@
 #include <glm/glm.hpp>
 
 #include "graph/parameters.h"
+#include "sandbox/frame_sequence.h"
 #include "util/error.h"
 
 namespace penumbra::sandbox {
 
 enum class StepKind {
   scene, technique, set, reset, camera, light, shadow_size, wait, screenshot, compare, view,
-  resize, expect_no_gl_error, ground, metrics, inspect, graph, debug, save_view
+  resize, expect_no_gl_error, ground, metrics, inspect, graph, debug, save_view, record
 };
 const char* step_kind_name(StepKind kind);
 
@@ -86,6 +87,7 @@ struct ScriptStep {
   CompareStep compare;
   ViewStep view;
   InspectStep inspect;
+  SequenceSpec sequence;  // record
 };
 
 // Limits of a script (docs/sandbox.md): steps, and nesting of any value.

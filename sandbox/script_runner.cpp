@@ -31,6 +31,10 @@ Status ScriptRunner::before_frame(SandboxController& c) {
       frames_left_ = step.number;  // this frame is the first of them
       return {};
     }
+    if (step.kind == StepKind::record) {
+      frames_left_ = step.sequence.frames;  // one rendered and saved per frame
+      return {};
+    }
     if (step.kind == StepKind::screenshot) {
       screenshot_ = step.text;
       frames_left_ = 1;
@@ -52,6 +56,7 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
     case StepKind::ground: return c.set_ground(step.flag);
     case StepKind::metrics: return write_metrics(c, step.text);
     case StepKind::graph: return write_graph_view(c, step.text);
+    case StepKind::record: return c.start_sequence(step.sequence);
     case StepKind::save_view: {
       Result<std::string> path = save_viewed_resource(c, step.text, *parse_view_format(step.format));
       return path ? Status{} : Status(path.error());

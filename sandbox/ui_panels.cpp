@@ -413,6 +413,37 @@ void compare_panel(SandboxController& c, UiState& ui) {
   if (!cs.stats_error.empty()) ImGui::TextColored(kRed, "%s", cs.stats_error.c_str());
 }
 
+// Frame sequences: N frames along a camera orbit or a turning light, saved as numbered PNGs.
+void sequence_panel(SandboxController& c, UiState& ui) {
+  const bool open = ImGui::CollapsingHeader("Record frames");
+  probe_item(ui.probe, "Record frames");
+  if (!open) return;
+  if (c.recording()) {
+    ImGui::Text("recording frame %4d of %4d", c.sequence_saved() + 1, c.sequence_frames());
+    if (ImGui::Button("stop")) c.stop_sequence();
+    probe_item(ui.probe, "stop recording");
+    return;
+  }
+  int path = static_cast<int>(ui.sequence.path);
+  if (combo_index(ui.probe, "path", &path, {"orbit the camera", "turn the light"}))
+    ui.sequence.path = static_cast<SequenceSpec::Path>(path);
+  tooltip("about the vertical axis through the scene's centre; the pose comes back after the last frame");
+  ImGui::InputInt("frames", &ui.sequence.frames);
+  probe_item(ui.probe, "frames");
+  ui.sequence.frames = std::clamp(ui.sequence.frames, 1, kMaxSequenceFrames);
+  ImGui::DragFloat("degrees", &ui.sequence.degrees, 1.0f, -3600.0f, 3600.0f, "%.0f");
+  ImGui::InputText("into", ui.sequence_dir, sizeof ui.sequence_dir);
+  probe_item(ui.probe, "into");
+  tooltip("an existing folder: frame_0000.png, frame_0001.png, ... (the frame without the panel)");
+  if (ImGui::Button("record")) {
+    SequenceSpec spec = ui.sequence;
+    spec.dir = ui.sequence_dir;
+    (void)c.start_sequence(spec);
+  }
+  probe_item(ui.probe, "record");
+  if (!c.sequence_note().empty()) ImGui::TextDisabled("%s", c.sequence_note().c_str());
+}
+
 // Messages have a fixed place of fixed height at the top of the panel: they wrap inside it and
 // scroll when long, so no widget below moves when one appears. Errors stay until the next
 // action succeeds; transient notes fade.
@@ -494,6 +525,7 @@ void draw_sandbox_ui(SandboxController& c, UiState& ui, const Layout& layout) {
   graph_panel(c, ui);
   viewer_panel(c, ui);
   compare_panel(c, ui);
+  sequence_panel(c, ui);
   ImGui::PopItemWidth();
   ImGui::End();
   draw_panel_divider(ui.panel_width, layout);

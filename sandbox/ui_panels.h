@@ -16,6 +16,8 @@ struct UiState {
   char screenshot_path[512] = "penumbra-screenshot.png";
   char metrics_path[512] = "penumbra-metrics.json";
   char save_dir[512] = ".";  // the resource viewer's "save PNG / PFM"
+  SequenceSpec sequence;      // the Record frames section's choices
+  char sequence_dir[512] = ".";
   bool screenshot_requested = false;  // set by the button, served by the host after rendering
   bool escape = false;                // Esc this frame: closes the topmost open thing
   bool graph_open = false;            // the Graph section (closed at start: it is tall)

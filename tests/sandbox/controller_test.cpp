@@ -84,6 +84,36 @@ TEST_F(Fixture, ViewedResourceHistogramAndSavedFiles) {
   std::filesystem::remove_all(dir);
 }
 
+// A recorded orbit: one numbered image a frame, the first at the starting pose, the pose back
+// afterwards; a bad spec records nothing.
+TEST_F(Fixture, RecordedOrbitSavesNumberedFramesAndRestoresThePose) {
+  const std::filesystem::path dir = test::fresh_temp_dir("sequence");
+  ASSERT_TRUE(controller->render_frame());
+  const std::string still = (dir / "still.png").string();
+  ASSERT_TRUE(controller->save_presentation_png(still));
+  const scene::Camera start = controller->camera();
+  EXPECT_FALSE(controller->start_sequence({.frames = 3, .dir = (dir / "absent").string()}));
+  EXPECT_FALSE(controller->recording());
+  ASSERT_TRUE(controller->start_sequence({.path = SequenceSpec::Path::orbit, .frames = 4, .degrees = 90.0f, .dir = dir.string()}));
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_TRUE(controller->recording()) << i;
+    ASSERT_TRUE(controller->render_frame());
+  }
+  EXPECT_FALSE(controller->recording());
+  EXPECT_EQ(controller->camera().position, start.position);
+  EXPECT_EQ(controller->camera().yaw, start.yaw);
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(std::filesystem::exists(dir / ("frame_000" + std::to_string(i) + ".png"))) << i;
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_0004.png"));
+  auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(dir / "frame_0000.png"), bytes(still));  // frame 0 is the starting pose
+  EXPECT_NE(bytes(dir / "frame_0002.png"), bytes(still));
+  EXPECT_NE(controller->sequence_note().find("recorded 4 frames"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 TEST_F(Fixture, UniformChangeUpdatesTheValueWithoutRecompiling) {
   ASSERT_TRUE(controller->render_frame());
   const int compiles = controller->session().compile_count();

@@ -211,6 +211,19 @@ TEST(Script, SaveViewAndChannelSteps) {
   }
 }
 
+TEST(Script, RecordStep) {
+  auto steps = parse_script(R"([{"record": {"frames": 12, "path": "light", "degrees": -90, "dir": "."}}])", "s.json");
+  ASSERT_TRUE(steps) << steps.error().to_string();
+  EXPECT_EQ((*steps)[0].kind, StepKind::record);
+  EXPECT_EQ((*steps)[0].sequence.frames, 12);
+  EXPECT_EQ((*steps)[0].sequence.path, SequenceSpec::Path::light);
+  EXPECT_EQ((*steps)[0].sequence.degrees, -90.0f);
+  for (const char* bad : {R"([{"record": {"frames": 0, "dir": "."}}])", R"([{"record": {"path": "spiral", "dir": "."}}])",
+                          R"([{"record": {"frames": 3}}])", R"([{"record": {"frames": 3, "dir": "no/such"}}])",
+                          R"([{"record": {"frames": 3, "dir": ".", "degrees": 99999}}])", R"([{"record": {"fps": 3, "dir": "."}}])"})
+    EXPECT_FALSE(parse_script(bad, "s.json")) << bad;
+}
+
 TEST(Options, SceneStagingOptionsAreTheClis) {
   auto o = parse_sandbox_options({"--camera", "1,2,3:0,0,0", "--light-dir", "0,-2,0", "--light-size", "0.5",
                                   "--ground", "off"});

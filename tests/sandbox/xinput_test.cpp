@@ -300,6 +300,29 @@ TEST(SandboxXInput, TheResourceViewerShowsAHistogramAndSavesTheResource) {
   EXPECT_TRUE(sb->state()["items"].contains("channel A"));
 }
 
+// Frame sequences from the UI: three frames of an orbit into a folder typed in the panel.
+TEST(SandboxXInput, RecordingFramesFromThePanelWritesNumberedImages) {
+  auto sb = start("record", kArgs + " --technique hard");
+  const fs::path seq = sb->dir() / "seq";
+  fs::create_directories(seq);
+  sb->click("Record frames");
+  sb->settle(3);
+  sb->click("into");
+  sb->settle(3);
+  sb->key("ctrl+a");
+  sb->xdo("type --delay 10 '" + seq.string() + "'");
+  sb->settle(int(seq.string().size()) + 4);
+  sb->click("frames");
+  sb->settle(3);
+  sb->key("ctrl+a");
+  sb->xdo("type 3");
+  sb->settle(4);
+  sb->click("record");
+  sb->settle(8);
+  for (int i = 0; i < 3; ++i) EXPECT_TRUE(fs::exists(seq / ("frame_000" + std::to_string(i) + ".png"))) << i << " " << sb->log();
+  EXPECT_FALSE(fs::exists(seq / "frame_0003.png"));
+}
+
 // Defect 9: the error view was unsigned, had no legend, hid the statistics and read out a stray
 // value (the coverage channel). Now: A - B signed, a legend in the corner, the statistics on the
 // view, and the inspector reads one value.
