@@ -1,6 +1,7 @@
 #include "sandbox/compare.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "measurement/eval_capture.h"
 #include "measurement/reference_frame.h"
@@ -29,26 +30,48 @@ Status configure_partner(technique::TechniqueSession& secondary, technique::Tech
   return {};
 }
 
+namespace {
+
+Result<metrics::MaskErrors> mask_errors(technique::TechniqueSession& test, technique::TechniqueSession& reference) {
+  gl::Texture* a = test.executor().resource(technique::kShadowMask);
+  gl::Texture* b = reference.executor().resource(technique::kShadowMask);
+  gl::Texture* depth = test.executor().resource("gbuffer_depth");
+  if (!a || !b || !depth) return make_error("shadow_mask or gbuffer_depth missing");
+  return metrics::compare_masks(measurement::read_mask_image(*a), measurement::read_mask_image(*b),
+                                measurement::read_coverage(*depth));
+}
+
+}  // namespace
+
 void update_compare_stats(CompareState& state, technique::TechniqueSession& primary,
-                          technique::TechniqueSession& secondary) {
-  gl::Texture* a = primary.executor().resource(technique::kShadowMask);
-  gl::Texture* b = secondary.executor().resource(technique::kShadowMask);
-  gl::Texture* depth = primary.executor().resource("gbuffer_depth");
-  if (!a || !b || !depth) {
-    state.stats_error = "shadow_mask or gbuffer_depth missing";
-    return;
-  }
-  // The secondary plays the reference: RMSE of the primary against it.
-  Result<metrics::MaskErrors> e = metrics::compare_masks(measurement::read_mask_image(*a), measurement::read_mask_image(*b),
-                                                         measurement::read_coverage(*depth));
+                          technique::TechniqueSession& secondary, technique::TechniqueSession* reference) {
+  // The secondary plays the reference, unless a third session runs it.
+  Result<metrics::MaskErrors> e = mask_errors(primary, reference ? *reference : secondary);
   if (!e) {
     state.stats_error = e.error().to_string();
     return;
   }
   state.stats = *e;
+  state.stats_b.reset();
+  if (reference) {
+    Result<metrics::MaskErrors> b = mask_errors(secondary, *reference);
+    if (!b) {
+      state.stats_error = "B: " + b.error().to_string();
+      return;
+    }
+    state.stats_b = *b;
+  }
   state.stats_error.clear();
   state.rmse_history.push_back(static_cast<float>(e->rmse));
   if (state.rmse_history.size() > CompareState::kHistory) state.rmse_history.erase(state.rmse_history.begin());
+}
+
+std::vector<int> column_edges(const CompareState& state, int width, int columns) {
+  auto px = [&](float f) { return std::clamp(static_cast<int>(std::lround(f * float(width))), 0, width); };
+  std::vector<int> edges = {0, px(state.split)};
+  if (columns == 3) edges.push_back(std::max(px(state.split2), edges[1]));
+  edges.push_back(width);
+  return edges;
 }
 
 }  // namespace penumbra::sandbox

@@ -20,6 +20,11 @@ struct CompareState {
   std::string with;                 // secondary technique
   enum class View { split, error } view = View::split;
   float split = 0.5f;               // split position, fraction of the width (left = primary)
+  // Three-way: A | B | the reference, a third session running the reference technique right of
+  // `split2`; the statistics are A's (stats) and B's (stats_b) against the reference.
+  bool three_way = false;
+  float split2 = 0.75f;
+  std::optional<metrics::MaskErrors> stats_b;
   float error_max = 0.25f;          // |a - b| shown white in the heat map
   int stats_every = 10;             // frames between RMSE read-backs
   std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
@@ -37,8 +42,13 @@ Status configure_partner(technique::TechniqueSession& secondary, technique::Tech
                          const std::string& technique, int width, int height);
 
 // Reads both shadow masks and the receiver coverage back and compares them (secondary as the
-// reference); sets state.stats or state.stats_error and appends to the RMSE history.
+// reference); sets state.stats or state.stats_error and appends to the RMSE history. With a
+// `reference` (three-way), A and B are each compared with it instead (stats, stats_b).
 void update_compare_stats(CompareState& state, technique::TechniqueSession& primary,
-                          technique::TechniqueSession& secondary);
+                          technique::TechniqueSession& secondary, technique::TechniqueSession* reference = nullptr);
+
+// Left edges in pixels of the split view's `columns` (2: A | B, 3: A | B | reference) over
+// `width`, from state.split and state.split2 (kept in order); then `width` as the last edge.
+std::vector<int> column_edges(const CompareState& state, int width, int columns);
 
 }  // namespace penumbra::sandbox

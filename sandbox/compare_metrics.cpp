@@ -13,12 +13,6 @@ namespace {
 
 using nlohmann::json;
 
-// The sessions on screen: the primary, and the secondary while comparing.
-std::vector<technique::TechniqueSession*> shown_sessions(SandboxController& c) {
-  std::vector<technique::TechniqueSession*> shown = {&c.session()};
-  if (c.compare().enabled && c.secondary()) shown.push_back(c.secondary());
-  return shown;
-}
 
 json progress_json(const technique::TechniqueSession& s) {
   const std::optional<exec::PassProgress>& p = s.progress();
@@ -58,14 +52,14 @@ std::string penumbra_rmse_text(const metrics::MaskErrors& e) {
 }
 
 bool progress_complete(SandboxController& c) {
-  for (technique::TechniqueSession* s : shown_sessions(c))
+  for (technique::TechniqueSession* s : c.shown_sessions())
     if (s->progress() && !s->progress()->complete()) return false;
   return true;
 }
 
 std::string progress_text(SandboxController& c) {
   std::string text;
-  for (technique::TechniqueSession* s : shown_sessions(c))
+  for (technique::TechniqueSession* s : c.shown_sessions())
     if (const std::optional<exec::PassProgress>& p = s->progress())
       text += (text.empty() ? "" : "; ") + s->technique() + " (" + measurement::progress_text(*p) + ")";
   return text;
@@ -95,14 +89,23 @@ std::string metrics_json(SandboxController& c) {
                  {"progress", progress_json(*c.secondary())}};
     k["view"] = cs.view == CompareState::View::split ? "split" : "error";
     k["passes"] = passes_json(*c.secondary());
+    auto errors = [](json& out, const metrics::MaskErrors& e) {
+      out["rmse"] = e.rmse;
+      out["rmse_penumbra"] = e.penumbra_pixels ? json(e.rmse_penumbra) : json(nullptr);
+      out["mae"] = e.mae;
+      out["max_error"] = e.max_error;
+      out["pixels"] = e.pixels;
+      out["penumbra_pixels"] = e.penumbra_pixels;
+    };
+    // Three-way: the statistics above are A against the reference; B's are under "b".
+    k["three_way"] = c.reference_session() != nullptr;
+    if (cs.stats_b && c.reference_session()) {
+      json b;
+      errors(b, *cs.stats_b);
+      k["b"] = b;
+    }
     if (cs.stats) {
-      const metrics::MaskErrors& e = *cs.stats;
-      k["rmse"] = e.rmse;
-      k["rmse_penumbra"] = e.penumbra_pixels ? json(e.rmse_penumbra) : json(nullptr);
-      k["mae"] = e.mae;
-      k["max_error"] = e.max_error;
-      k["pixels"] = e.pixels;
-      k["penumbra_pixels"] = e.penumbra_pixels;
+      errors(k, *cs.stats);
     } else {
       k["stats_error"] = cs.stats_error.empty() ? "no statistics yet" : cs.stats_error;
     }

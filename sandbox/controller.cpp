@@ -8,6 +8,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "measurement/reference_frame.h"
 #include "technique/preset.h"
 #include "util/file_write.h"
 #include "util/file_read.h"
@@ -63,7 +64,7 @@ Status SandboxController::load_scene(const std::string& name_or_path) {
   if (!loaded) return note(loaded.error());
   if (Status s = scene::stage_scene(*loaded, staging); !s) return note(s);
   primary_->set_scene(*loaded);
-  if (secondary_) secondary_->set_scene(*loaded);
+  for (technique::TechniqueSession* s : partners()) s->set_scene(*loaded);
   scene_name_ = name_or_path;
   staging_ = staging;
   return note({});
@@ -164,8 +165,8 @@ void SandboxController::align_light_with_camera() {
 
 Status SandboxController::set_shadow_size(int texels) {
   if (Status s = primary_->set_shadow_size(texels); !s) return note(s);
-  if (secondary_)
-    if (Status s = secondary_->set_shadow_size(texels); !s) return note(s);
+  for (technique::TechniqueSession* p : partners())
+    if (Status s = p->set_shadow_size(texels); !s) return note(s);
   return note({});
 }
 
@@ -232,7 +233,7 @@ Status SandboxController::load_preset(const std::string& name_or_path) {
 // --- debug switches ---------------------------------------------------------------------------
 
 Status SandboxController::set_no_reuse(bool on) {
-  for (technique::TechniqueSession* s : {primary_.get(), secondary_.get()}) {
+  for (technique::TechniqueSession* s : {primary_.get(), secondary_.get(), third_.get()}) {
     if (!s) continue;
     s->compile_options().no_reuse = on;
     if (Status st = s->recompile(); !st) return note(st);
@@ -241,7 +242,7 @@ Status SandboxController::set_no_reuse(bool on) {
 }
 
 Status SandboxController::set_extended_lifetimes(bool on) {
-  for (technique::TechniqueSession* s : {primary_.get(), secondary_.get()}) {
+  for (technique::TechniqueSession* s : {primary_.get(), secondary_.get(), third_.get()}) {
     if (!s) continue;
     s->compile_options().extended_lifetimes = on;
     if (Status st = s->recompile(); !st) return note(st);
@@ -251,7 +252,7 @@ Status SandboxController::set_extended_lifetimes(bool on) {
 
 void SandboxController::set_immediate(bool on) {
   primary_->executor().options().immediate = on;
-  if (secondary_) secondary_->executor().options().immediate = on;
+  for (technique::TechniqueSession* s : partners()) s->executor().options().immediate = on;
 }
 
 // --- viewer and compare -----------------------------------------------------------------------
@@ -292,12 +293,54 @@ Status SandboxController::configure_secondary() {
   return configure_partner(*secondary_, *primary_, compare_.with, width_, height_);
 }
 
+std::vector<technique::TechniqueSession*> SandboxController::partners() {
+  std::vector<technique::TechniqueSession*> out;
+  for (technique::TechniqueSession* s : {secondary_.get(), third_.get()})
+    if (s) out.push_back(s);
+  return out;
+}
+
+std::vector<technique::TechniqueSession*> SandboxController::shown_sessions() {
+  std::vector<technique::TechniqueSession*> out = {primary_.get()};
+  if (compare_.enabled && secondary_) out.push_back(secondary_.get());
+  if (compare_.enabled && compare_.three_way && third_) out.push_back(third_.get());
+  return out;
+}
+
+Status SandboxController::set_three_way(bool on) {
+  if (!on) {
+    compare_.three_way = false;
+    compare_.stats_b.reset();
+    third_.reset();
+    return note({});
+  }
+  if (!registry_.find(measurement::kReferenceTechnique))
+    return note(make_error(std::string("three-way compare needs the '") + measurement::kReferenceTechnique +
+                           "' technique, which is not registered"));
+  if (!compare_.enabled)
+    if (Status s = set_compare(true); !s) return s;
+  if (!third_) third_ = std::make_unique<technique::TechniqueSession>(registry_, library_);
+  if (Status s = configure_partner(*third_, *primary_, measurement::kReferenceTechnique, width_, height_); !s) {
+    third_.reset();
+    return note(s);
+  }
+  if (!compare_.three_way) {  // three equal columns to start
+    compare_.split = 1.0f / 3.0f;
+    compare_.split2 = 2.0f / 3.0f;
+  }
+  compare_.three_way = true;
+  return note({});
+}
+
 Status SandboxController::set_compare(bool enabled, const std::string& with) {
   if (!enabled) {
     compare_.enabled = false;
     compare_.stats.reset();
+    compare_.stats_b.reset();
     compare_.rmse_history.clear();
+    compare_.three_way = false;
     secondary_.reset();  // frees its textures: compare mode costs nothing when off
+    third_.reset();
     return note({});
   }
   std::string partner = with.empty() ? (compare_.with.empty() ? default_compare_partner(registry_, primary_->technique()) : compare_.with)
@@ -316,15 +359,17 @@ Status SandboxController::set_compare(bool enabled, const std::string& with) {
   return note({});
 }
 
-void SandboxController::update_compare_stats() { sandbox::update_compare_stats(compare_, *primary_, *secondary_); }
+void SandboxController::update_compare_stats() {
+  sandbox::update_compare_stats(compare_, *primary_, *secondary_, compare_.three_way ? third_.get() : nullptr);
+}
 
 // --- frames -----------------------------------------------------------------------------------
 
 Status SandboxController::resize(int width, int height) {
   if (width == width_ && height == height_) return {};
   if (Status s = primary_->resize(width, height); !s) return note(s);
-  if (secondary_)
-    if (Status s = secondary_->resize(width, height); !s) return note(s);
+  for (technique::TechniqueSession* p : partners())
+    if (Status s = p->resize(width, height); !s) return note(s);
   if (Status s = display_.resize(width, height); !s) return note(s);
   width_ = width;
   height_ = height;
@@ -333,14 +378,15 @@ Status SandboxController::resize(int width, int height) {
 
 void SandboxController::reload_shaders() {
   primary_->shaders().reload_changed();
-  if (secondary_) secondary_->shaders().reload_changed();
+  for (technique::TechniqueSession* p : partners()) p->shaders().reload_changed();
   display_.shaders().reload_changed();
 }
 
 std::vector<Error> SandboxController::shader_errors() const {
   std::vector<Error> all = primary_->shaders().errors();
-  if (secondary_)
-    for (Error& e : secondary_->shaders().errors()) all.push_back(std::move(e));
+  for (technique::TechniqueSession* p : {secondary_.get(), third_.get()})
+    if (p)
+      for (Error& e : p->shaders().errors()) all.push_back(std::move(e));
   for (Error& e : display_.shaders().errors()) all.push_back(std::move(e));
   return all;
 }
@@ -408,17 +454,20 @@ Status SandboxController::render_and_compose() {
   if (Status s = primary_->render(); !s) return s;
   bool comparing = compare_.enabled && secondary_;
   if (comparing) {
-    secondary_->camera() = primary_->camera();
-    secondary_->light() = primary_->light();
-    if (Status s = secondary_->render(); !s) return s;
+    for (technique::TechniqueSession* p : partners()) {
+      p->camera() = primary_->camera();
+      p->light() = primary_->light();
+      if (Status s = p->render(); !s) return s;
+    }
     if (compare_.stats_every > 0 && frames_ % compare_.stats_every == 0) update_compare_stats();
   }
   ++frames_;
 
   if (viewer_.auto_range && !viewer_.resource.empty() && frames_ % 15 == 1) (void)apply_auto_range(*this);
   if (viewer_.histogram && !viewer_.resource.empty() && frames_ % 15 == 1) (void)update_histogram(*this);
-  return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr, compare_, viewer_, width_, height_,
-                                  debug_views_.texel_density});
+  return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr,
+                                  comparing && compare_.three_way ? third_.get() : nullptr, compare_, viewer_, width_,
+                                  height_, debug_views_.texel_density});
 }
 
 Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) {
@@ -432,6 +481,7 @@ Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) 
   const bool immediate = primary_->executor().options().immediate;
   const int shadow_size = old.settings().shadow_size;
   secondary_.reset();
+  third_.reset();
   primary_.reset();
   descriptions_.clear();
   const Status swapped = swap();
@@ -457,6 +507,7 @@ Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) 
   if (!viewer_.resource.empty())
     if (Status s = view_resource(viewer_.resource); !s) (void)view_resource("");  // gone from the new graph
   if (compare_.enabled && (!registry_.find(compare_.with) || !configure_secondary())) compare_.enabled = false;
+  if (compare_.three_way && (!compare_.enabled || !set_three_way(true))) compare_.three_way = false;
   if (!swapped) return note(swapped);
   return note(selected);
 }

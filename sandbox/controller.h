@@ -93,6 +93,10 @@ class SandboxController {
   Status set_technique(const std::string& name);
   technique::TechniqueSession& session() { return *primary_; }
   technique::TechniqueSession* secondary() { return secondary_.get(); }
+  // Three-way compare's third session, running the reference (null otherwise).
+  technique::TechniqueSession* reference_session() { return compare_.three_way ? third_.get() : nullptr; }
+  // The sessions on screen, left to right: A; A, B; or A, B, reference.
+  std::vector<technique::TechniqueSession*> shown_sessions();
   // `text` as on the command line ("32", "true", "vogel"); structural ones recompile.
   Status set_param(const std::string& name, const std::string& text);
   Status set_param_value(const std::string& name, const graph::ParamValue& value);
@@ -124,6 +128,9 @@ class SandboxController {
   // `with` empty: "reference" when registered, else the technique after the primary.
   Status set_compare(bool enabled, const std::string& with = "");
   void set_compare_view(CompareState::View view) { compare_.view = view; }
+  // A | B | reference: a third session runs the reference technique (turns compare on; an error
+  // when no "reference" is registered). Off frees it.
+  Status set_three_way(bool on);
   // Reads the statistics back from the last rendered frame now (scripts' `metrics`, exports).
   void refresh_compare_stats() {
     if (compare_.enabled && secondary_ && frames_ > 0) update_compare_stats();
@@ -179,6 +186,7 @@ class SandboxController {
   Status render_and_compose();
   void update_compare_stats();
   void pose_for_sequence();
+  std::vector<technique::TechniqueSession*> partners();  // secondary and third, those that exist
   Status save_sequence_frame();
 
   struct Recording {
@@ -196,6 +204,7 @@ class SandboxController {
   const exec::PassLibrary& library_;
   std::unique_ptr<technique::TechniqueSession> primary_;
   std::unique_ptr<technique::TechniqueSession> secondary_;
+  std::unique_ptr<technique::TechniqueSession> third_;  // three-way compare: the reference
   std::string scene_name_;
   scene::StagingOptions staging_;
   DisplayPass display_;

@@ -40,19 +40,20 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
     base.coverage_in_g = true;
     if (Status s = display.draw(base); !s) return s;
   } else if (comparing) {
-    gl::Texture* color_b = in.secondary->executor().resource(technique::kColor);
-    int split_px = std::clamp(static_cast<int>(std::lround(in.compare.split * in.width)), 0, in.width);
-    DisplayPass::Layer left = base, right = base;
-    left.texture = color_a;
-    left.viewport = {0, 0, split_px, in.height};
-    left.uv_rect = zoomed_uv_rect(in.viewer.zoom, {0.0f, 0.0f, float(split_px) / in.width, 1.0f});
-    right.texture = color_b ? color_b : color_a;
-    right.viewport = {split_px, 0, in.width - split_px, in.height};
-    right.uv_rect = zoomed_uv_rect(in.viewer.zoom, {float(split_px) / in.width, 0.0f, float(in.width - split_px) / in.width, 1.0f});
-    if (split_px > 0)
-      if (Status s = display.draw(left); !s) return s;
-    if (split_px < in.width)
-      if (Status s = display.draw(right); !s) return s;
+    // Columns A | B (| reference), each the same pixels of its own session's image.
+    std::vector<technique::TechniqueSession*> sessions = {&in.primary, in.secondary};
+    if (in.third) sessions.push_back(in.third);
+    const std::vector<int> edges = column_edges(in.compare, in.width, static_cast<int>(sessions.size()));
+    for (size_t i = 0; i < sessions.size(); ++i) {
+      const int x0 = edges[i], x1 = edges[i + 1];
+      if (x1 <= x0) continue;
+      gl::Texture* color = sessions[i]->executor().resource(technique::kColor);
+      DisplayPass::Layer column = base;
+      column.texture = color ? color : color_a;
+      column.viewport = {x0, 0, x1 - x0, in.height};
+      column.uv_rect = zoomed_uv_rect(in.viewer.zoom, {float(x0) / in.width, 0.0f, float(x1 - x0) / in.width, 1.0f});
+      if (Status s = display.draw(column); !s) return s;
+    }
   } else {
     base.texture = color_a;
     if (Status s = display.draw(base); !s) return s;

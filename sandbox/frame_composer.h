@@ -15,6 +15,7 @@ namespace penumbra::sandbox {
 struct FrameInputs {
   technique::TechniqueSession& primary;
   technique::TechniqueSession* secondary;  // null when not comparing
+  technique::TechniqueSession* third;      // three-way compare's reference; null otherwise
   const CompareState& compare;
   const ViewerSettings& viewer;
   int width = 0, height = 0;  // the frame, pixels

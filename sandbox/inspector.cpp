@@ -56,9 +56,15 @@ Result<PixelReadout> inspect_pixel(SandboxController& c, glm::ivec2 pixel) {
       tex = &c.display().difference_texture();
       r.source = "A - B";
     } else {
-      if (comparing && pixel.x >= static_cast<int>(std::lround(cs.split * c.width()))) {
-        side = c.secondary();
-        r.source = "color (B)";
+      if (comparing) {
+        const std::vector<technique::TechniqueSession*> shown = c.shown_sessions();
+        const std::vector<int> edges = column_edges(cs, c.width(), static_cast<int>(shown.size()));
+        static const char* kSides[] = {"color (A)", "color (B)", "color (reference)"};
+        for (size_t i = 1; i < shown.size(); ++i)
+          if (pixel.x >= edges[i]) {
+            side = shown[i];
+            r.source = kSides[i];
+          }
       }
       tex = side->executor().resource(technique::kColor);
     }

@@ -17,7 +17,7 @@
 namespace penumbra::sandbox {
 
 struct PixelReadout {
-  std::string source;                 // resource name, "color (A)", "color (B)" or "A - B"
+  std::string source;  // resource name, "color (A)", "color (B)", "color (reference)" or "A - B"
   glm::ivec2 pixel{0};                // frame pixel, origin top-left
   // Texel of the inspected image, origin top-left like the pixel (row 0 is the image's top row,
   // as in a saved PNG); none outside the image.

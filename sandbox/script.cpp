@@ -229,7 +229,11 @@ void parse_body(ScriptStep& s, const json& v) {
         s.compare.enabled = true;
         s.compare.with = v.get<std::string>();
       } else {
-        only_keys(v, {"enabled", "with", "view"}, "compare");
+        only_keys(v, {"enabled", "with", "view", "three_way"}, "compare");
+        if (v.contains("three_way")) {
+          if (!v["three_way"].is_boolean()) problem("compare.three_way must be true or false, got " + echo(v["three_way"]));
+          else s.compare.three_way = v["three_way"].get<bool>();
+        }
         s.compare.enabled = !v.contains("enabled") || v["enabled"] == true;
         if (v.contains("with")) s.compare.with = need_string(v["with"], "compare.with");
         if (v.contains("view")) {

@@ -49,6 +49,7 @@ struct CompareStep {
   bool enabled = false;
   std::string with;  // technique to compare against; empty = "reference" if registered, else the next one
   std::string view;  // "split" | "error"; empty = unchanged
+  std::optional<bool> three_way;  // A | B | reference
 };
 
 struct ViewStep {

@@ -91,6 +91,8 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
     case StepKind::screenshot: return {};
     case StepKind::compare:
       if (Status s = c.set_compare(step.compare.enabled, step.compare.with); !s) return s;
+      if (step.compare.three_way)
+        if (Status s = c.set_three_way(*step.compare.three_way && step.compare.enabled); !s) return s;
       if (step.compare.view == "split") c.set_compare_view(CompareState::View::split);
       if (step.compare.view == "error") c.set_compare_view(CompareState::View::error);
       return {};

@@ -375,10 +375,17 @@ void compare_panel(SandboxController& c, UiState& ui) {
     ImGui::EndCombo();
   }
   if (!cs.enabled) return;
+  bool three = cs.three_way;
+  if (ImGui::Checkbox("three-way: A | B | reference", &three)) (void)c.set_three_way(three);
+  probe_item(ui.probe, "three-way");
+  tooltip("a third column runs the reference; the statistics are A's and B's against it");
   int view = static_cast<int>(cs.view);
   if (combo_index(ui.probe, "view", &view, {"split", "signed error (A - B)"}))
     c.set_compare_view(static_cast<CompareState::View>(view));
-  if (cs.view == CompareState::View::split) ImGui::SliderFloat("split", &cs.split, 0.0f, 1.0f);
+  if (cs.view == CompareState::View::split) {
+    ImGui::SliderFloat("split", &cs.split, 0.0f, cs.three_way ? cs.split2 : 1.0f);
+    if (cs.three_way) ImGui::SliderFloat("split 2", &cs.split2, cs.split, 1.0f);
+  }
   else ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "A - B = +-%.2f is full colour");
   ImGui::SliderInt("stats every", &cs.stats_every, 1, 120, "%d frames");
   const std::string progress = progress_text(c);
@@ -394,6 +401,8 @@ void compare_panel(SandboxController& c, UiState& ui) {
     ImGui::Text("MAE %.4f   max %.3f   %zu px (%zu penumbra)", cs.stats->mae, cs.stats->max_error,
                 cs.stats->pixels, cs.stats->penumbra_pixels);
   }
+  if (cs.stats_b && c.reference_session())
+    ImGui::Text("B: RMSE %.4f   penumbra RMSE %s", cs.stats_b->rmse, penumbra_rmse_text(*cs.stats_b).c_str());
   if (!cs.rmse_history.empty()) {
     float top = 0.0f;
     for (float v : cs.rmse_history) top = std::max(top, v);

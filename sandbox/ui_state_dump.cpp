@@ -61,7 +61,10 @@ Status write_ui_state(const std::string& path, SandboxController& c, const UiSta
   j["graph_open"] = ui.graph_open;
   const CompareState& cs = c.compare();
   j["compare"] = {{"enabled", cs.enabled}, {"view", cs.view == CompareState::View::split ? "split" : "error"},
-                  {"split", cs.split}, {"with", c.secondary() ? c.secondary()->technique() : ""}};
+                  {"split", cs.split}, {"split2", cs.split2}, {"three_way", c.reference_session() != nullptr},
+                  {"with", c.secondary() ? c.secondary()->technique() : ""},
+                  {"stats", cs.stats ? json{{"rmse", cs.stats->rmse}} : json(nullptr)},
+                  {"stats_b", cs.stats_b ? json{{"rmse", cs.stats_b->rmse}} : json(nullptr)}};
   j["viewer"] = {{"resource", c.viewer().resource}, {"zoom", c.viewer().zoom.zoom}};
   j["pool_textures"] = s.pool().texture_count();
   j["timing"] = exec::timing_mode_name(s.executor().timing_mode());

@@ -142,30 +142,41 @@ void draw_viewport_overlay(SandboxController& c, const Layout& layout) {
   CompareState& cs = c.compare();
   if (cs.enabled && c.secondary()) {
     if (cs.view == CompareState::View::split) {
-      const float split_x = x0 + cs.split * float(c.width());
-      bool hot = false;
-      const float dx = drag_handle("##split_divider", split_x - 4.0f, y0, 8.0f, h, &hot);
-      if (dx != 0.0f && c.width() > 0) cs.split = std::clamp(cs.split + dx / float(c.width()), 0.0f, 1.0f);
-      dl->AddLine(ImVec2(split_x, y0), ImVec2(split_x, y0 + h), hot ? IM_COL32(120, 180, 255, 255) : IM_COL32(255, 255, 255, 200),
-                  hot ? 3.0f : 2.0f);
-      const float half = std::max(w * 0.5f - 16.0f, 80.0f);
-      label(dl, ImVec2(x0 + 8, y0 + 6), "A: " + settings_label(c.session()), std::max(std::min(half, split_x - x0 - 12), 60.0f));
-      const std::string right = "B: " + settings_label(*c.secondary());
-      const float rw = std::min(ImGui::CalcTextSize(right.c_str()).x, half);
-      label(dl, ImVec2(x0 + w - rw - 8, y0 + 6), right, half);
+      // A | B (| reference): a draggable divider between columns, each column's label at its top.
+      const std::vector<technique::TechniqueSession*> shown = c.shown_sessions();
+      const std::vector<int> edges = column_edges(cs, c.width(), static_cast<int>(shown.size()));
+      static const char* kNames[] = {"A: ", "B: ", "reference: "};
+      for (size_t i = 0; i < shown.size(); ++i) {
+        const float left = x0 + float(edges[i]), right = x0 + float(edges[i + 1]);
+        label(dl, ImVec2(left + 8, y0 + 6), kNames[i] + settings_label(*shown[i]), std::max(right - left - 16, 60.0f));
+      }
+      for (size_t k = 1; k + 1 < edges.size(); ++k) {
+        const float split_x = x0 + float(edges[k]);
+        bool hot = false;
+        const float dx = drag_handle(k == 1 ? "##split_divider" : "##split_divider_2", split_x - 4.0f, y0, 8.0f, h, &hot);
+        float& split = k == 1 ? cs.split : cs.split2;
+        if (dx != 0.0f && c.width() > 0) split = std::clamp(split + dx / float(c.width()), 0.0f, 1.0f);
+        if (cs.split > cs.split2 && shown.size() == 3) (k == 1 ? cs.split2 : cs.split) = split;  // they never cross
+        dl->AddLine(ImVec2(split_x, y0), ImVec2(split_x, y0 + h),
+                    hot ? IM_COL32(120, 180, 255, 255) : IM_COL32(255, 255, 255, 200), hot ? 3.0f : 2.0f);
+      }
     } else {
       label(dl, ImVec2(x0 + 8, y0 + 6),
             "A - B  A: " + settings_label(c.session()) + "   B: " + settings_label(*c.secondary()), w - 16);
       error_legend(dl, x0 + w, y0 + h, cs.error_max);
     }
     // The statistics on the view itself, in every view mode, so window screenshots carry them.
-    if (cs.stats) {
-      char stats[160];
-      std::snprintf(stats, sizeof stats, "RMSE %.4f  penumbra %s  MAE %.4f  max %.3f", cs.stats->rmse,
-                    penumbra_rmse_text(*cs.stats).c_str(), cs.stats->mae, cs.stats->max_error);
+    const bool three = cs.three_way && c.reference_session();
+    float y = y0 + 28;
+    for (const auto& [who, e] : {std::pair{three ? "A vs reference: " : "", &cs.stats}, std::pair{"B vs reference: ", &cs.stats_b}}) {
+      if (!*e || (e == &cs.stats_b && !three)) continue;
+      char stats[200];
+      std::snprintf(stats, sizeof stats, "%sRMSE %.4f  penumbra %s  MAE %.4f  max %.3f", who, (*e)->rmse,
+                    penumbra_rmse_text(**e).c_str(), (*e)->mae, (*e)->max_error);
       std::string line = stats;
-      if (const std::string p = progress_text(c); !p.empty()) line += "  |  " + p;
-      label(dl, ImVec2(x0 + 8, y0 + 28), line, std::max(w - 16, 60.0f));
+      if (const std::string p = progress_text(c); !p.empty() && e == &cs.stats) line += "  |  " + p;
+      label(dl, ImVec2(x0 + 8, y), line, std::max(w - 16, 60.0f));
+      y += 20;
     }
   }
   const ViewerSettings& v = c.viewer();

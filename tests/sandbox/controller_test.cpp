@@ -114,6 +114,32 @@ TEST_F(Fixture, RecordedOrbitSavesNumberedFramesAndRestoresThePose) {
   std::filesystem::remove_all(dir);
 }
 
+// Three-way compare: A | B | reference; A and B are each measured against the third session, so
+// a B equal to A has A's statistics exactly, and off frees the third session.
+TEST_F(Fixture, ThreeWayCompareMeasuresAAndBAgainstTheReference) {
+  ASSERT_TRUE(controller->set_compare(true, kTinyTechnique));
+  ASSERT_TRUE(controller->set_three_way(true));
+  ASSERT_NE(controller->reference_session(), nullptr);
+  EXPECT_EQ(controller->reference_session()->technique(), "reference");
+  EXPECT_EQ(controller->shown_sessions().size(), 3u);
+  ASSERT_TRUE(controller->render_frame());
+  controller->refresh_compare_stats();
+  const CompareState& cs = controller->compare();
+  ASSERT_TRUE(cs.stats && cs.stats_b) << cs.stats_error;
+  EXPECT_EQ(cs.stats->rmse, cs.stats_b->rmse);
+  EXPECT_GT(cs.stats->rmse, 0.0);  // the tiny technique's stripes are not the reference's shadows
+  ASSERT_TRUE(controller->set_param("lit_level", "0"));  // A changes, B does not
+  ASSERT_TRUE(controller->render_frame());
+  controller->refresh_compare_stats();
+  EXPECT_NE(cs.stats->rmse, cs.stats_b->rmse);
+  const std::vector<int> edges = column_edges(cs, controller->width(), 3);
+  EXPECT_EQ(edges, (std::vector<int>{0, 32, 64, 96}));  // three equal columns to start
+  ASSERT_TRUE(controller->set_three_way(false));
+  EXPECT_EQ(controller->reference_session(), nullptr);
+  EXPECT_EQ(controller->shown_sessions().size(), 2u);
+  EXPECT_TRUE(controller->render_frame());
+}
+
 TEST_F(Fixture, UniformChangeUpdatesTheValueWithoutRecompiling) {
   ASSERT_TRUE(controller->render_frame());
   const int compiles = controller->session().compile_count();

@@ -7,6 +7,7 @@
 #include <stb/stb_image.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iterator>
 #include <sstream>
@@ -298,6 +299,36 @@ TEST(SandboxXInput, TheResourceViewerShowsAHistogramAndSavesTheResource) {
   sb->click("channel G");  // off: red and blue remain
   sb->settle(3);
   EXPECT_TRUE(sb->state()["items"].contains("channel A"));
+}
+
+// Three-way compare from the panel: A | B | reference with two dividers; dragging the second
+// one moves only it.
+TEST(SandboxXInput, ThreeWayCompareHasThreeColumnsAndTwoDividers) {
+  auto sb = start("three_way", kArgs + " --technique hard");
+  sb->click("Compare");
+  sb->settle(3);
+  sb->click("against");
+  sb->settle(3);
+  sb->click("against/hard");
+  sb->settle(4);
+  sb->click("three-way");
+  json s = sb->settle(6);
+  ASSERT_TRUE(s["compare"]["three_way"].get<bool>()) << s["message"];
+  EXPECT_NEAR(s["compare"]["split"].get<float>(), 1.0f / 3.0f, 1e-4f);
+  const json vp = s["viewport"];
+  const int x = vp[0].get<int>() + int(std::lround(s["compare"]["split2"].get<float>() * vp[2].get<float>()));
+  const int y = vp[1].get<int>() + vp[3].get<int>() / 2;
+  sb->move_to(x, y);
+  sb->settle(2);
+  sb->xdo("mousedown 1");
+  sb->settle(2);
+  sb->move_to(x + 30, y);
+  sb->settle(2);
+  sb->xdo("mouseup 1");
+  s = sb->settle(4);
+  EXPECT_NEAR(s["compare"]["split2"].get<float>(), 2.0f / 3.0f + 30.0f / vp[2].get<float>(), 0.02f);
+  EXPECT_NEAR(s["compare"]["split"].get<float>(), 1.0f / 3.0f, 1e-4f);
+  EXPECT_TRUE(s["compare"]["stats_b"].is_object());
 }
 
 // Frame sequences from the UI: three frames of an orbit into a folder typed in the panel.
