@@ -123,6 +123,7 @@ class SandboxController {
     bool light_frustum = false;   // the shadow frustum and the emitter, in the scene
     bool blocker_region = false;  // the blocker-search cone/region of the pixel under the cursor
     bool texel_density = false;   // the frame shows shadow-map texels per pixel instead of colour
+    bool light_gizmo = false;     // the sky disk in the viewport's corner: drag the light (light_gizmo.h)
   };
   DebugViews& debug_views() { return debug_views_; }
   // `with` empty: "reference" when registered, else the technique after the primary.

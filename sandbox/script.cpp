@@ -174,13 +174,12 @@ void parse_body(ScriptStep& s, const json& v) {
       break;
     }
     case StepKind::debug:
-      only_keys(v, {"light_frustum", "blocker_region", "texel_density"}, "debug");
-      for (const char* key : {"light_frustum", "blocker_region", "texel_density"})
+      only_keys(v, {"light_frustum", "blocker_region", "texel_density", "light_gizmo"}, "debug");
+      for (const auto& [key, field] : {std::pair{"light_frustum", &s.light_frustum}, std::pair{"blocker_region", &s.blocker_region},
+                                       std::pair{"texel_density", &s.texel_density}, std::pair{"light_gizmo", &s.light_gizmo}})
         if (v.contains(key)) {
           if (!v[key].is_boolean()) problem(std::string("debug.") + key + " must be true or false, got " + echo(v[key]));
-          (std::string(key) == "light_frustum"    ? s.light_frustum
-           : std::string(key) == "blocker_region" ? s.blocker_region
-                                                  : s.texel_density) = v[key].get<bool>();
+          else *field = v[key].get<bool>();
         }
       break;
     case StepKind::ground:

@@ -81,7 +81,7 @@ struct ScriptStep {
   std::vector<std::pair<std::string, std::string>> assignments;  // set: name -> value text
   int number = 0;    // wait frames, shadow size (texels)
   bool flag = false;  // ground: the switch
-  std::optional<bool> light_frustum, blocker_region, texel_density;  // debug: shadow debug views
+  std::optional<bool> light_frustum, blocker_region, texel_density, light_gizmo;  // debug: debug views
   int width = 0, height = 0;  // resize (pixels)
   CameraStep camera;
   LightStep light;

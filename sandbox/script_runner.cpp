@@ -63,6 +63,7 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
     }
     case StepKind::debug:
       if (step.light_frustum) c.debug_views().light_frustum = *step.light_frustum;
+      if (step.light_gizmo) c.debug_views().light_gizmo = *step.light_gizmo;
       if (step.blocker_region) c.debug_views().blocker_region = *step.blocker_region;
       if (step.texel_density) c.debug_views().texel_density = *step.texel_density;
       return {};

@@ -184,6 +184,11 @@ void light_panel(SandboxController& c, UiState& ui) {
       if (selectable(ui.probe, "shadow map", std::to_string(s), s == shadow)) (void)c.set_shadow_size(s);
     ImGui::EndCombo();
   }
+  ImGui::Checkbox("light gizmo", &c.debug_views().light_gizmo);
+  probe_item(ui.probe, "light gizmo toggle");
+  tooltip("a sky disk in the viewport's corner (zenith at the centre, up = where the camera looks): drag the "
+          "light's dot to move it; beside it the light's diameter in world units");
+  ImGui::SameLine();
   if (ImGui::Button("light = view direction (Space)")) (void)c.align_light_with_camera();
   probe_item(ui.probe, "light = view direction (Space)");
 }
@@ -538,7 +543,7 @@ void draw_sandbox_ui(SandboxController& c, UiState& ui, const Layout& layout) {
   ImGui::PopItemWidth();
   ImGui::End();
   draw_panel_divider(ui.panel_width, layout);
-  draw_viewport_overlay(c, layout);
+  draw_viewport_overlay(c, layout, ui.probe);
   probe_tooltip(ui.probe);
 }
 

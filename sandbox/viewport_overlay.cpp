@@ -8,6 +8,7 @@
 #include "exec/gbuffer_readback.h"
 #include "sandbox/compare_metrics.h"
 #include "sandbox/inspector.h"
+#include "sandbox/light_gizmo.h"
 #include "sandbox/shadow_debug.h"
 #include "sandbox/ui_widgets.h"
 #include "technique/frame_graph.h"
@@ -59,6 +60,37 @@ void error_legend(ImDrawList* dl, float right, float bottom, float scale) {
   dl->AddText(ImVec2(x, y + kH + 2), IM_COL32(240, 240, 240, 255), lo);
   dl->AddText(ImVec2(x + kW * 0.5f - 3, y + kH + 2), IM_COL32(240, 240, 240, 255), "0");
   dl->AddText(ImVec2(x + kW - ImGui::CalcTextSize(hi).x, y + kH + 2), IM_COL32(240, 240, 240, 255), hi);
+}
+
+// The light gizmo (light_gizmo.h) centred at `centre`: drag inside the disk to move the light;
+// the light's diameter in world units beside it.
+void draw_light_gizmo(SandboxController& c, ImDrawList* dl, ImVec2 centre, UiProbe& probe) {
+  const float r = kGizmoRadius;
+  bool hot = false;
+  ImGui::SetNextWindowPos(ImVec2(centre.x - r, centre.y - r));
+  ImGui::SetNextWindowSize(ImVec2(2 * r, 2 * r));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::Begin("##light_gizmo", nullptr, kBare);
+  ImGui::InvisibleButton("##disk", ImVec2(2 * r, 2 * r));
+  hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
+  if (ImGui::IsItemActive()) {
+    const ImVec2 m = ImGui::GetIO().MousePos;
+    c.set_light_direction(gizmo_direction(glm::vec2(m.x - centre.x, centre.y - m.y) / r, c.camera()));
+  }
+  probe_item(probe, "light gizmo");
+  ImGui::End();
+  ImGui::PopStyleVar();
+  dl->AddCircleFilled(centre, r, IM_COL32(10, 12, 20, hot ? 210 : 160), 48);
+  for (float ring : {1.0f / 3.0f, 2.0f / 3.0f, 1.0f}) dl->AddCircle(centre, r * ring, IM_COL32(150, 160, 180, 140), 48);
+  dl->AddTriangleFilled(ImVec2(centre.x, centre.y - r - 6), ImVec2(centre.x - 4, centre.y - r + 2), ImVec2(centre.x + 4, centre.y - r + 2),
+                        IM_COL32(200, 200, 220, 200));  // up: where the camera looks
+  const glm::vec2 p = gizmo_point(c.light().direction, c.camera());
+  const ImVec2 dot(centre.x + p.x * r, centre.y - p.y * r);
+  dl->AddLine(centre, dot, IM_COL32(255, 160, 50, 160), 1.0f);
+  dl->AddCircleFilled(dot, 6.0f, IM_COL32(255, 170, 40, 255));
+  char size[48];
+  std::snprintf(size, sizeof size, "light %.3g wu across", c.light().size);
+  label(dl, ImVec2(centre.x - r, centre.y + r + 6), size, 2 * r + 60);
 }
 
 // The light's frustum (yellow) and emitter (orange), projected over the frame.
@@ -132,7 +164,7 @@ void draw_panel_divider(int& panel_width, const Layout& layout) {
                     hot ? IM_COL32(90, 140, 220, 255) : IM_COL32(55, 58, 66, 255));
 }
 
-void draw_viewport_overlay(SandboxController& c, const Layout& layout) {
+void draw_viewport_overlay(SandboxController& c, const Layout& layout, UiProbe& probe) {
   const Rect& vp = layout.viewport;
   const float x0 = float(vp.x), y0 = float(vp.y);
   const float w = float(std::min(c.width(), vp.w)), h = float(std::min(c.height(), vp.h));
@@ -189,6 +221,7 @@ void draw_viewport_overlay(SandboxController& c, const Layout& layout) {
     label(dl, ImVec2(x0 + w - 90, y0 + h - 24), z, 90);
   }
   if (c.debug_views().light_frustum) draw_light_frustum(c, dl, x0, y0);
+  if (c.debug_views().light_gizmo) draw_light_gizmo(c, dl, ImVec2(x0 + 20 + kGizmoRadius, y0 + h - 48 - kGizmoRadius), probe);
   // The pixel inspector: the value under the cursor.
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   const int px = int(mouse.x) - vp.x, py = int(mouse.y) - vp.y;

@@ -6,6 +6,7 @@
 
 #include "sandbox/controller.h"
 #include "sandbox/layout.h"
+#include "sandbox/ui_widgets.h"
 
 namespace penumbra::sandbox {
 
@@ -13,7 +14,7 @@ namespace penumbra::sandbox {
 void draw_panel_divider(int& panel_width, const Layout& layout);
 
 // Compare labels and divider, refused-frame note. The frame is drawn at the viewport's top-left.
-void draw_viewport_overlay(SandboxController& c, const Layout& layout);
+void draw_viewport_overlay(SandboxController& c, const Layout& layout, UiProbe& probe);
 
 // "pcss  samples=32 kernel=\"box\"": a technique and its parameters that differ from the
 // defaults ("defaults" when none do).

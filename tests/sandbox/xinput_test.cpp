@@ -331,6 +331,33 @@ TEST(SandboxXInput, ThreeWayCompareHasThreeColumnsAndTwoDividers) {
   EXPECT_TRUE(s["compare"]["stats_b"].is_object());
 }
 
+// The light gizmo: dragging the light's dot to the top of the disk puts the light ahead of the
+// camera, low, shining back towards it; the disk's label gives the light's size in world units.
+TEST(SandboxXInput, DraggingTheLightGizmoMovesTheLight) {
+  auto sb = start("gizmo", kArgs + " --technique hard");
+  sb->click("light gizmo toggle");
+  json s = sb->settle(4);
+  ASSERT_TRUE(s["items"].contains("light gizmo")) << s["items"].dump();
+  auto [cx, cy] = sb->centre("light gizmo");
+  const int r = int(s["items"]["light gizmo"][2].get<float>() / 2);
+  sb->move_to(cx, cy);
+  sb->settle(2);
+  sb->xdo("mousedown 1");
+  sb->settle(2);
+  sb->move_to(cx, cy - r / 2);
+  sb->settle(2);
+  sb->move_to(cx, cy - r + 2);
+  sb->settle(2);
+  sb->xdo("mouseup 1");
+  s = sb->settle(3);
+  const json d = s["light_direction"], f = s["camera_forward"];
+  const float fx = f[0].get<float>(), fz = f[2].get<float>(), fl = std::sqrt(fx * fx + fz * fz);
+  const float horizontal_dot = (d[0].get<float>() * fx + d[2].get<float>() * fz) / fl;
+  EXPECT_LT(horizontal_dot, -0.9f) << d << " " << f;  // shines back at the camera
+  EXPECT_LT(d[1].get<float>(), 0.0f);
+  EXPECT_GT(d[1].get<float>(), -0.2f);  // low: near the horizon
+}
+
 // Frame sequences from the UI: three frames of an orbit into a folder typed in the panel.
 TEST(SandboxXInput, RecordingFramesFromThePanelWritesNumberedImages) {
   auto sb = start("record", kArgs + " --technique hard");
