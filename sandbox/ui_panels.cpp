@@ -1,6 +1,7 @@
 #include "sandbox/ui_panels.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -117,7 +118,9 @@ void parameter_widget(SandboxController& c, UiState& ui, const graph::ParamDesc&
 }
 
 void scene_panel(SandboxController& c, UiState& ui) {
-  if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool open = ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen);
+  probe_item(ui.probe, "Scene");
+  if (!open) return;
   if (begin_combo(ui.probe, "scene", c.scene_name().c_str())) {
     for (const std::string& n : scene::builtin_scene_names())
       if (selectable(ui.probe, "scene", n, n == c.scene_name())) (void)c.load_scene(n);
@@ -158,7 +161,9 @@ void scene_panel(SandboxController& c, UiState& ui) {
 }
 
 void light_panel(SandboxController& c, UiState& ui) {
-  if (!ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool open = ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen);
+  probe_item(ui.probe, "Light");
+  if (!open) return;
   scene::Light& l = c.light();
   int type = static_cast<int>(l.type);  // the combo lists LightType in declaration order
   if (combo_index(ui.probe, "type", &type, {"directional", "spot", "point"}))
@@ -229,7 +234,9 @@ void preset_menu(SandboxController& c, UiState& ui) {
 }
 
 void technique_panel(SandboxController& c, UiState& ui) {
-  if (!ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool open = ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen);
+  probe_item(ui.probe, "Technique");
+  if (!open) return;
   technique::TechniqueSession& s = c.session();
   if (begin_combo(ui.probe, "technique", s.technique().c_str())) {
     for (const std::string& n : c.technique_names()) {
@@ -324,11 +331,14 @@ void viewer_panel(SandboxController& c, UiState& ui) {
   ImGui::Checkbox("histogram", &v.histogram);
   tooltip("the viewed channel's values over the range above, 64 bins (outside values in the end bins), every 15 frames");
   if (v.histogram && !v.counts.empty()) {
+    // Log heights: a mask's lit bin holds most pixels and would flatten the penumbra's.
+    std::vector<float> heights(v.counts.size());
+    std::transform(v.counts.begin(), v.counts.end(), heights.begin(), [](float n) { return std::log10(1.0f + n); });
     const float top = *std::max_element(v.counts.begin(), v.counts.end());
     char overlay[96];
-    std::snprintf(overlay, sizeof overlay, "%.4g .. %.4g, highest bin %.0f", v.min, v.max, top);
-    ImGui::PlotHistogram("##histogram", v.counts.data(), static_cast<int>(v.counts.size()), 0, overlay, 0.0f,
-                         std::max(top, 1.0f), ImVec2(ImGui::GetContentRegionAvail().x, 60));
+    std::snprintf(overlay, sizeof overlay, "%.4g .. %.4g, log scale, top bin %.0f", v.min, v.max, top);
+    ImGui::PlotHistogram("##histogram", heights.data(), static_cast<int>(heights.size()), 0, overlay, 0.0f,
+                         std::max(std::log10(1.0f + top), 1.0f), ImVec2(ImGui::GetContentRegionAvail().x, 60));
     probe_item(ui.probe, "histogram plot");
   }
   ImGui::InputText("save to", ui.save_dir, sizeof ui.save_dir);
