@@ -91,6 +91,12 @@ class LiveSandbox {
     auto [x, y] = centre(item);
     click_at(x, y);
   }
+  // Whether the widget shows up within `frames` frames (a list's entries appear once it is drawn).
+  bool wait_for_item(const std::string& item, int frames = 20) {
+    for (int i = 0; i < frames; ++i)
+      if (settle(1)["items"].contains(item)) return true;
+    return false;
+  }
   // Waits until the widget sits still for two frames (a list just opened moves once ImGui has
   // measured it).
   void wait_still(const std::string& item) {

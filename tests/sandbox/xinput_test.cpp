@@ -206,8 +206,7 @@ TEST(SandboxXInput, PresetMenuLoadsWithOneClickAndListsSavedOnes) {
   EXPECT_TRUE(fs::exists(sb->dir() / "config/penumbra/presets/pmchss/narrow.json")) << s["message"];
   EXPECT_EQ(s["presets"]["saved"], json::array({"narrow"}));
   sb->click("preset");
-  sb->settle(3);
-  EXPECT_TRUE(sb->state()["items"].contains("preset/narrow (saved)"));
+  EXPECT_TRUE(sb->wait_for_item("preset/narrow (saved)")) << sb->state()["items"].dump();
 }
 
 // Defect 10: pm-CHSS's kernel scale barely changed the picture and nothing said why: the panel

@@ -166,16 +166,16 @@ TEST(SandboxXvfbViewport, PixelInspectorReadsTheTexelUnderAZoomedPixel) {
 
   const nlohmann::json final_image = read_json(out("final.json"));
   EXPECT_EQ(final_image["source"], "color (A)");
-  EXPECT_EQ(final_image["texel"], nlohmann::json({3, kFrameH - 1 - 300})) << "zoom 1: texel = pixel, rows flipped";
+  EXPECT_EQ(final_image["texel"], nlohmann::json({3, 300})) << "zoom 1: texel = pixel, both counted from the top";
   EXPECT_GE(final_image["channels"].get<int>(), 3);
 
   // Zoom 4 about uv (0.25, 0.25): frame pixel (px, py) shows uv 0.125 + 0.25 * (pixel centre / size).
   for (const auto& [name, px] : {std::pair<const char*, int>{"a.json", 0}, {"b.json", 40}}) {
     const nlohmann::json j = read_json(out(name));
     const int tx = static_cast<int>((0.125 + 0.25 * (px + 0.5) / kFrameW) * kFrameW);
-    const int ty = static_cast<int>((0.125 + 0.25 * (kFrameH - 1 - 160 + 0.5) / kFrameH) * kFrameH);
+    const int ty_gl = static_cast<int>((0.125 + 0.25 * (kFrameH - 1 - 160 + 0.5) / kFrameH) * kFrameH);
     EXPECT_EQ(j["source"], "shadow_mask") << j.dump();
-    ASSERT_EQ(j["texel"], nlohmann::json({tx, ty})) << j.dump();
+    ASSERT_EQ(j["texel"], nlohmann::json({tx, kFrameH - 1 - ty_gl})) << "rows counted from the top: " << j.dump();
     EXPECT_NEAR(j["value"][0].get<double>(), tiny_mask_at(tx), 1e-3) << j.dump();
   }
   EXPECT_NE(read_json(out("a.json"))["value"][0], read_json(out("b.json"))["value"][0]) << "two stripes apart";
