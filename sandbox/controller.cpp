@@ -132,8 +132,14 @@ Status SandboxController::set_camera(const std::optional<glm::vec3>& position,
   return note({});
 }
 
-void SandboxController::set_light_direction(glm::vec3 direction) {
-  if (glm::length(direction) < 1e-6f) return;
+Status SandboxController::light_change_allowed() {
+  if (light_frozen_) return note(make_error("the light is frozen: untick 'freeze light' in the Light panel first"));
+  return {};
+}
+
+Status SandboxController::set_light_direction(glm::vec3 direction) {
+  if (Status s = light_change_allowed(); !s) return s;
+  if (glm::length(direction) < 1e-6f) return note(make_error("the light direction must not be zero"));
   direction = glm::normalize(direction);
   scene::Light& l = light();
   if (l.type == scene::LightType::directional && primary_->has_scene()) {
@@ -143,24 +149,31 @@ void SandboxController::set_light_direction(glm::vec3 direction) {
     l.position = c - direction * distance;
   }
   l.direction = direction;
+  return {};
 }
 
-void SandboxController::set_light_type(scene::LightType type) { light().type = type; }
+Status SandboxController::set_light_type(scene::LightType type) {
+  if (Status s = light_change_allowed(); !s) return s;
+  light().type = type;
+  return {};
+}
 
 Status SandboxController::set_light_size(float diameter) {
+  if (Status s = light_change_allowed(); !s) return s;
   if (!(diameter >= 0.0f) || !std::isfinite(diameter))
     return note(make_error("light size must be >= 0 (emitter disk diameter, world units)"));
   light().size = diameter;
   return note({});
 }
 
-void SandboxController::align_light_with_camera() {
+Status SandboxController::align_light_with_camera() {
+  if (Status s = light_change_allowed(); !s) return s;
   if (light().type != scene::LightType::directional) {  // spot and point lights move to the camera
     light().position = camera().position;
     light().direction = camera().forward();
-  } else {
-    set_light_direction(camera().forward());
+    return {};
   }
+  return set_light_direction(camera().forward());
 }
 
 Status SandboxController::set_shadow_size(int texels) {

@@ -79,11 +79,18 @@ class SandboxController {
   Status set_camera(const std::optional<glm::vec3>& position, const std::optional<glm::vec3>& look_at,
                     std::optional<float> yaw_deg, std::optional<float> pitch_deg);
   // Directional lights keep their emitter disk at the same distance from the scene centre.
-  void set_light_direction(glm::vec3 direction);
-  void set_light_type(scene::LightType type);
+  Status set_light_direction(glm::vec3 direction);
+  Status set_light_type(scene::LightType type);
   Status set_light_size(float diameter);
   // Space in the window: the light looks where the camera looks (Sterna's demo).
-  void align_light_with_camera();
+  Status align_light_with_camera();
+  // A frozen light (and so its shadow frustum, which is fitted to the scene, never to the camera)
+  // stays put while the camera moves: every light change (Space, the gizmo, the Light panel, a
+  // script's light step) is refused with a message until it is unfrozen.
+  void set_light_frozen(bool frozen) { light_frozen_ = frozen; }
+  bool light_frozen() const { return light_frozen_; }
+  // An error when the light is frozen (the message says how to unfreeze it).
+  Status light_change_allowed();
   Status set_shadow_size(int texels);
 
   // --- technique and parameters -------------------------------------------------------------
@@ -198,6 +205,7 @@ class SandboxController {
     glm::vec3 centre{0.0f};
   };
   std::optional<Recording> recording_;
+  bool light_frozen_ = false;
   std::string sequence_note_;  // "recorded N frames into DIR" after the last one
 
   const technique::TechniqueRegistry& registry_;

@@ -202,7 +202,11 @@ void parse_body(ScriptStep& s, const json& v) {
       if (v.contains("pitch")) s.camera.pitch_deg = need_number(v["pitch"], "camera.pitch (degrees)");
       break;
     case StepKind::light:
-      only_keys(v, {"type", "direction", "position", "size", "spot_angle"}, "light");
+      only_keys(v, {"type", "direction", "position", "size", "spot_angle", "frozen"}, "light");
+      if (v.contains("frozen")) {
+        if (!v["frozen"].is_boolean()) problem("light.frozen must be true or false, got " + echo(v["frozen"]));
+        else s.light.frozen = v["frozen"].get<bool>();
+      }
       if (v.empty()) problem("light: give at least one of type, direction, position, size, spot_angle");
       if (v.contains("type")) {
         s.light.type = need_string(v["type"], "light.type");

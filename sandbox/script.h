@@ -43,6 +43,7 @@ struct LightStep {
   std::optional<glm::vec3> direction, position;
   std::optional<float> size;          // emitter disk diameter, world units
   std::optional<float> spot_angle_deg;  // cone half-angle, degrees
+  std::optional<bool> frozen;           // freeze the light (refuse changes) / unfreeze
 };
 
 struct CompareStep {

@@ -78,12 +78,17 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
       return c.set_camera(step.camera.position, step.camera.look_at, step.camera.yaw_deg,
                           step.camera.pitch_deg);
     case StepKind::light:
+      if (step.light.frozen) c.set_light_frozen(*step.light.frozen);
+      if (!step.light.type && !step.light.position && !step.light.direction && !step.light.spot_angle_deg && !step.light.size)
+        return {};
+      if (Status s = c.light_change_allowed(); !s) return s;
       if (step.light.type)
-        c.set_light_type(*step.light.type == "spot"    ? scene::LightType::spot
-                         : *step.light.type == "point" ? scene::LightType::point
-                                                       : scene::LightType::directional);
+        (void)c.set_light_type(*step.light.type == "spot"    ? scene::LightType::spot
+                               : *step.light.type == "point" ? scene::LightType::point
+                                                             : scene::LightType::directional);
       if (step.light.position) c.light().position = *step.light.position;
-      if (step.light.direction) c.set_light_direction(*step.light.direction);
+      if (step.light.direction)
+        if (Status s = c.set_light_direction(*step.light.direction); !s) return s;
       if (step.light.spot_angle_deg) c.light().spot_angle = glm::radians(*step.light.spot_angle_deg);
       if (step.light.size) return c.set_light_size(*step.light.size);
       return {};

@@ -165,9 +165,15 @@ void light_panel(SandboxController& c, UiState& ui) {
   probe_item(ui.probe, "Light");
   if (!open) return;
   scene::Light& l = c.light();
+  bool frozen = c.light_frozen();
+  if (ImGui::Checkbox("freeze light", &frozen)) c.set_light_frozen(frozen);
+  probe_item(ui.probe, "freeze light");
+  tooltip("keep the light and its shadow frustum (fitted to the scene, never to the camera) where they are while "
+          "the camera moves: Space, the gizmo and the fields below are refused until unticked");
+  if (frozen) ImGui::BeginDisabled();
   int type = static_cast<int>(l.type);  // the combo lists LightType in declaration order
   if (combo_index(ui.probe, "type", &type, {"directional", "spot", "point"}))
-    c.set_light_type(static_cast<scene::LightType>(type));
+    (void)c.set_light_type(static_cast<scene::LightType>(type));
   if (l.type == scene::LightType::point)
     tooltip("light in every direction from its position; only esm renders it inside the scene bounds "
             "(six shadow-map faces), one-map techniques need it outside them");
@@ -182,6 +188,7 @@ void light_panel(SandboxController& c, UiState& ui) {
     float deg = glm::degrees(l.spot_angle);
     if (ImGui::SliderFloat("spot angle", &deg, 1.0f, 89.0f, "%.0f deg")) l.spot_angle = glm::radians(deg);
   }
+  if (frozen) ImGui::EndDisabled();
   static const int kSizes[] = {256, 512, 1024, 2048, 4096};
   int shadow = c.session().settings().shadow_size;
   if (begin_combo(ui.probe, "shadow map", (std::to_string(shadow) + " texels").c_str())) {

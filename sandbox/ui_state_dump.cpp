@@ -71,6 +71,8 @@ Status write_ui_state(const std::string& path, SandboxController& c, const UiSta
   j["inspector"] = inspector_under_mouse(c, layout);
   j["light_direction"] = vec3(c.light().direction);
   j["camera_forward"] = vec3(c.camera().forward());
+  j["camera_position"] = vec3(c.camera().position);
+  j["light_frozen"] = c.light_frozen();
   j["message"] = c.message();
   j["note"] = ui.note;
   const ImGuiStyle& style = ImGui::GetStyle();

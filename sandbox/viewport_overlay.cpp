@@ -73,9 +73,9 @@ void draw_light_gizmo(SandboxController& c, ImDrawList* dl, ImVec2 centre, UiPro
   ImGui::Begin("##light_gizmo", nullptr, kBare);
   ImGui::InvisibleButton("##disk", ImVec2(2 * r, 2 * r));
   hot = ImGui::IsItemHovered() || ImGui::IsItemActive();
-  if (ImGui::IsItemActive()) {
+  if (ImGui::IsItemActive() && !c.light_frozen()) {
     const ImVec2 m = ImGui::GetIO().MousePos;
-    c.set_light_direction(gizmo_direction(glm::vec2(m.x - centre.x, centre.y - m.y) / r, c.camera()));
+    (void)c.set_light_direction(gizmo_direction(glm::vec2(m.x - centre.x, centre.y - m.y) / r, c.camera()));
   }
   probe_item(probe, "light gizmo");
   ImGui::End();
@@ -87,7 +87,7 @@ void draw_light_gizmo(SandboxController& c, ImDrawList* dl, ImVec2 centre, UiPro
   const glm::vec2 p = gizmo_point(c.light().direction, c.camera());
   const ImVec2 dot(centre.x + p.x * r, centre.y - p.y * r);
   dl->AddLine(centre, dot, IM_COL32(255, 160, 50, 160), 1.0f);
-  dl->AddCircleFilled(dot, 6.0f, IM_COL32(255, 170, 40, 255));
+  dl->AddCircleFilled(dot, 6.0f, c.light_frozen() ? IM_COL32(140, 140, 150, 255) : IM_COL32(255, 170, 40, 255));
   char size[48];
   std::snprintf(size, sizeof size, "light %.3g wu across", c.light().size);
   label(dl, ImVec2(centre.x - r, centre.y + r + 6), size, 2 * r + 60);

@@ -70,7 +70,7 @@ class CameraInput {
       if (axes != glm::vec3(0.0f))
         c.move_camera(axes, dt, down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT));
       if (pressed_in(events, GLFW_KEY_SPACE)) {
-        c.align_light_with_camera();
+        (void)c.align_light_with_camera();  // refused with a message when the light is frozen
         ui.probe.keys["space"]++;
       }
       if (pressed_in(events, GLFW_KEY_F12)) {

@@ -302,12 +302,12 @@ TEST_F(Fixture, DebugSwitchesRecompileAndStillRender) {
 }
 
 TEST_F(Fixture, LightAndCameraControls) {
-  controller->set_light_direction({0, -1, 0});
+  ASSERT_TRUE(controller->set_light_direction({0, -1, 0}));
   EXPECT_NEAR(glm::length(controller->light().direction), 1.0f, 1e-5f);
   EXPECT_FALSE(controller->set_light_size(-1.0f));
   ASSERT_TRUE(controller->set_light_size(0.2f));
   EXPECT_FLOAT_EQ(controller->light().size, 0.2f);
-  controller->align_light_with_camera();
+  ASSERT_TRUE(controller->align_light_with_camera());
   glm::vec3 f = controller->camera().forward();
   EXPECT_NEAR(glm::dot(controller->light().direction, f), 1.0f, 1e-4f);
   glm::vec3 p0 = controller->camera().position;
@@ -316,6 +316,26 @@ TEST_F(Fixture, LightAndCameraControls) {
   ASSERT_TRUE(controller->set_camera(glm::vec3(0, 3, 6), glm::vec3(0, 0, 0), std::nullopt, std::nullopt));
   EXPECT_LT(controller->camera().pitch, 0.0f);
   EXPECT_TRUE(controller->render_frame());
+}
+
+// A frozen light refuses every change, saying how to unfreeze, while the camera still moves.
+TEST_F(Fixture, AFrozenLightStaysWhileTheCameraMoves) {
+  const scene::Light before = controller->light();
+  controller->set_light_frozen(true);
+  const Status refused = controller->align_light_with_camera();
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().message.find("freeze light"), std::string::npos);
+  EXPECT_FALSE(controller->set_light_direction({1, -1, 0}));
+  EXPECT_FALSE(controller->set_light_size(0.1f));
+  EXPECT_FALSE(controller->set_light_type(scene::LightType::spot));
+  const glm::vec3 p0 = controller->camera().position;
+  controller->move_camera({1, 0, 0}, 0.5f, false);
+  EXPECT_NE(controller->camera().position, p0);
+  EXPECT_EQ(controller->light().direction, before.direction);
+  EXPECT_EQ(controller->light().size, before.size);
+  EXPECT_EQ(controller->light().type, before.type);
+  controller->set_light_frozen(false);
+  EXPECT_TRUE(controller->set_light_size(0.1f));
 }
 
 // The examples on the real techniques: pcf's `samples` has no effect with the box

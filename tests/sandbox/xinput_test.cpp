@@ -131,6 +131,24 @@ TEST(SandboxXInput, NoWidgetIsCutAtTheDefaultPanelWidth) {
   EXPECT_TRUE(s["items"].contains("total"));
 }
 
+// Defect 7: widgets shifted sideways as the panel's content changed (a scrollbar appearing
+// narrowed them). Opening the tall Graph section leaves every widget above it where it was.
+TEST(SandboxXInput, OpeningASectionMovesNoWidgetSideways) {
+  auto sb = start("shift", kArgs + " --technique hard");
+  const json before = sb->settle(4)["items"];
+  sb->click("Graph");
+  const json after = sb->settle(8)["items"];
+  const float graph_y = before["Graph"][1].get<float>();
+  int compared = 0;
+  for (const auto& [id, r] : before.items()) {
+    if (r[1].get<float>() >= graph_y || !after.contains(id)) continue;
+    EXPECT_EQ(after[id][0], r[0]) << id << " moved sideways";
+    EXPECT_EQ(after[id][2], r[2]) << id << " changed width";
+    ++compared;
+  }
+  EXPECT_GE(compared, 8);
+}
+
 // Defect 7: tooltips opened off the window and lists were see-through. A parameter's long
 // description, hovered at the right of the panel, lies inside the window, and where it covers
 // the viewport's bright floor its background is the opaque popup colour.
@@ -355,6 +373,28 @@ TEST(SandboxXInput, DraggingTheLightGizmoMovesTheLight) {
   EXPECT_LT(horizontal_dot, -0.9f) << d << " " << f;  // shines back at the camera
   EXPECT_LT(d[1].get<float>(), 0.0f);
   EXPECT_GT(d[1].get<float>(), -0.2f);  // low: near the horizon
+}
+
+// A frozen light (and frustum) stays while the camera flies: Space is refused with a message,
+// W still moves the camera.
+TEST(SandboxXInput, AFrozenLightStaysWhileTheCameraFlies) {
+  auto sb = start("freeze", kArgs + " --technique hard");
+  sb->click("freeze light");
+  json s = sb->settle(3);
+  ASSERT_TRUE(s["light_frozen"].get<bool>());
+  const json light = s["light_direction"], position = s["camera_position"];
+  const json vp = s["viewport"];
+  sb->move_to(vp[0].get<int>() + 50, vp[1].get<int>() + 50);
+  sb->settle(2);
+  sb->key("space");
+  sb->xdo("keydown w");
+  sb->settle(6);
+  sb->xdo("keyup w");
+  s = sb->settle(3);
+  EXPECT_EQ(s["keys"].value("space", 0), 1);
+  EXPECT_EQ(s["light_direction"], light);
+  EXPECT_NE(s["camera_position"], position);
+  EXPECT_NE(s["message"].get<std::string>().find("frozen"), std::string::npos) << s["message"];
 }
 
 // Frame sequences from the UI: three frames of an orbit into a folder typed in the panel.
