@@ -104,4 +104,21 @@ std::vector<glm::vec2> blocker_search_region(const glm::vec3& receiver, const sc
   return hull;
 }
 
+float light_distance(const scene::ShadowFrustum& f, float depth) {
+  const float n = f.near_plane, fa = f.far_plane;
+  if (f.orthographic) return n + depth * (fa - n);
+  const float z = depth * 2.0f - 1.0f;
+  return 2.0f * n * fa / (fa + n - z * (fa - n));
+}
+
+float shadow_depth(const scene::ShadowFrustum& f, const glm::vec3& p) {
+  const glm::vec4 c = f.view_proj * glm::vec4(p, 1.0f);
+  return c.z / c.w * 0.5f + 0.5f;
+}
+
+float penumbra_width(float light_size, float receiver_distance, float blocker_distance) {
+  if (!(blocker_distance > 0.0f) || receiver_distance <= blocker_distance) return 0.0f;
+  return light_size * (receiver_distance - blocker_distance) / blocker_distance;
+}
+
 }  // namespace penumbra::sandbox

@@ -38,4 +38,13 @@ std::vector<glm::vec2> blocker_search_region(const glm::vec3& receiver, const sc
 // Points of the emitter outline (world), `count` of them.
 std::vector<glm::vec3> emitter_outline(const scene::Light& light, int count);
 
+// Distance from the emitter plane (directional) or light position (spot) of shadow-map window
+// depth `depth` in [0, 1] (the frustum's near/far, linearised for perspective maps).
+float light_distance(const scene::ShadowFrustum& frustum, float depth);
+// Shadow-map window depth of world point `p`.
+float shadow_depth(const scene::ShadowFrustum& frustum, const glm::vec3& p);
+// The penumbra a blocker at `blocker_distance` from a light `light_size` across casts on a
+// receiver at `receiver_distance` (similar triangles, Fernando's PCSS estimate), world units.
+float penumbra_width(float light_size, float receiver_distance, float blocker_distance);
+
 }  // namespace penumbra::sandbox

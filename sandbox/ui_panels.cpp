@@ -375,6 +375,7 @@ void viewer_panel(SandboxController& c, UiState& ui) {
   tooltip("the shadow map's frustum (yellow) and the emitter disk with its direction (orange), drawn over the scene");
   ImGui::SameLine();
   ImGui::Checkbox("blocker search", &dv.blocker_region);
+  probe_item(ui.probe, "blocker search");
   tooltip("for the pixel under the cursor: its cone to the emitter in the scene, and (viewing a shadow-map-sized "
           "resource) the region of the map where its blockers can be");
   ImGui::SameLine();

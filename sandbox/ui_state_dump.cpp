@@ -45,6 +45,7 @@ Status write_ui_state(const std::string& path, SandboxController& c, const UiSta
   j["popup"] = rect(ui.probe.popup);
   j["tooltip"] = rect(ui.probe.tooltip);
   j["keys"] = ui.probe.keys;
+  j["texts"] = ui.probe.texts;
   j["fields"] = {{"preset name", ui.preset_name}, {"glTF", ui.scene_path}, {"screenshot path", ui.screenshot_path},
                  {"metrics file", ui.metrics_path}};
   j["scene"] = c.scene_name();

@@ -24,7 +24,9 @@ struct UiProbe {
   std::string open_popup;              // the combo whose list is open ("" none)
   std::optional<Rect> popup, tooltip;  // the open combo list's and the tooltip's windows
   std::map<std::string, int> keys;     // shortcut keys acted on: "space", "f12", "escape"
+  std::map<std::string, std::string> texts;  // readouts drawn over the view this frame ("penumbra")
   void begin_frame() {
+    texts.clear();
     open_popup.clear();
     popup.reset();
     tooltip.reset();

@@ -104,9 +104,59 @@ void draw_light_frustum(SandboxController& c, ImDrawList* dl, float x0, float y0
     dl->AddLine(ImVec2(o.x + a.x, o.y + a.y), ImVec2(o.x + b.x, o.y + b.y), IM_COL32(255, 140, 40, 255), 2.0f);
 }
 
+// Beside the cursor: the light's size in world units and the penumbra it casts here, from the
+// nearest blocker the shadow map holds in the receiver's blocker-search region (its bounding
+// box read back in one piece, or every k-th texel of a box larger than 256 x 256).
+void penumbra_label(SandboxController& c, ImDrawList* dl, ImVec2 at, const glm::vec3& receiver, const scene::ShadowFrustum& f,
+                    const std::vector<glm::vec2>& region, UiProbe& probe) {
+  const float size = c.light().size;
+  gl::Texture* map = c.session().executor().resource("shadow_map");
+  const int n = c.session().settings().shadow_size;
+  char text[160];
+  if (region.empty() || !map || !map->info().is_depth || map->width() != n || map->height() != n) {
+    std::snprintf(text, sizeof text, "light %.3g wu across", size);
+    label(dl, at, text, 260);
+    probe.texts["penumbra"] = text;
+    return;
+  }
+  glm::vec2 lo(1.0f), hi(0.0f);
+  for (const glm::vec2& q : region) {
+    lo = glm::min(lo, q);
+    hi = glm::max(hi, q);
+  }
+  const glm::ivec2 t0 = glm::clamp(glm::ivec2(lo * float(n)), glm::ivec2(0), glm::ivec2(n - 1));
+  const glm::ivec2 t1 = glm::clamp(glm::ivec2(hi * float(n)), glm::ivec2(0), glm::ivec2(n - 1));
+  const glm::ivec2 extent = t1 - t0 + 1, step = (extent + 255) / 256;  // at most 256 x 256 texels
+  const glm::ivec2 read = (extent + step - 1) / step;
+  const float receiver_depth = shadow_depth(f, receiver);
+  float nearest = 2.0f;
+  std::vector<float> depths(static_cast<size_t>(step == glm::ivec2(1) ? read.x * read.y : 1));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  if (step == glm::ivec2(1))
+    glGetTextureSubImage(map->id(), 0, t0.x, t0.y, 0, extent.x, extent.y, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         static_cast<GLsizei>(depths.size() * sizeof(float)), depths.data());
+  for (int j = 0; j < read.y; ++j)
+    for (int i = 0; i < read.x; ++i) {
+      float d = 1.0f;
+      if (step == glm::ivec2(1)) d = depths[static_cast<size_t>(j * read.x + i)];
+      else glGetTextureSubImage(map->id(), 0, t0.x + i * step.x, t0.y + j * step.y, 0, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, sizeof d, &d);
+      if (d < receiver_depth - 1e-4f) nearest = std::min(nearest, d);
+    }
+  const float dr = light_distance(f, receiver_depth);
+  if (nearest > 1.0f) {
+    std::snprintf(text, sizeof text, "light %.3g wu across; no blocker between here and the light", size);
+  } else {
+    const float db = light_distance(f, nearest);
+    std::snprintf(text, sizeof text, "light %.3g wu across -> penumbra %.3g wu here (blocker %.3g, receiver %.3g wu from the light)",
+                  size, penumbra_width(size, dr, db), db, dr);
+  }
+  label(dl, at, text, 300);
+  probe.texts["penumbra"] = text;
+}
+
 // The receiver under the cursor: its cone to the emitter in the scene and, when the viewer
 // shows a shadow-map-sized resource, the blocker-search region on it.
-void draw_blocker_region(SandboxController& c, ImDrawList* dl, float x0, float y0, int px, int py) {
+void draw_blocker_region(SandboxController& c, ImDrawList* dl, float x0, float y0, int px, int py, UiProbe& probe) {
   gl::Texture* depth = c.session().executor().resource("gbuffer_depth");
   if (!depth || !c.session().has_scene() || depth->width() != c.width() || depth->height() != c.height()) return;
   const ViewZoom& z = c.viewer().zoom;
@@ -126,6 +176,7 @@ void draw_blocker_region(SandboxController& c, ImDrawList* dl, float x0, float y
     dl->AddLine(ImVec2(x0 + a.x, y0 + a.y), ImVec2(x0 + b.x, y0 + b.y), IM_COL32(80, 255, 200, 150), 1.0f);
   const scene::ShadowFrustum f = scene::shadow_frustum(light, c.session().scene().bounds);
   const std::vector<glm::vec2> region = blocker_search_region(receiver, light, f);
+  penumbra_label(c, dl, ImVec2(x0 + float(px) + 14, y0 + float(py) + 14), receiver, f, region, probe);
   const ViewerSettings& v = c.viewer();
   const int shadow = c.session().settings().shadow_size;
   gl::Texture* shown = v.resource.empty() ? nullptr : c.session().executor().resource(v.resource);
@@ -226,7 +277,7 @@ void draw_viewport_overlay(SandboxController& c, const Layout& layout, UiProbe& 
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   const int px = int(mouse.x) - vp.x, py = int(mouse.y) - vp.y;
   if (c.debug_views().blocker_region && px >= 0 && py >= 0 && px < int(w) && py < int(h) && c.frames() > 0)
-    draw_blocker_region(c, dl, x0, y0, px, py);
+    draw_blocker_region(c, dl, x0, y0, px, py, probe);
   if (px >= 0 && py >= 0 && px < int(w) && py < int(h) && !ImGui::GetIO().WantCaptureMouse && c.frames() > 0)
     if (Result<PixelReadout> r = inspect_pixel(c, {px, py}); r && r->texel)
       label(dl, ImVec2(x0 + 8, y0 + h - 24), readout_text(*r), std::max(w - 110, 60.0f));

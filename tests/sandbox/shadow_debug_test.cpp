@@ -67,5 +67,21 @@ TEST(ShadowDebug, BlockerRegionUnderASunIsTheEmitterDiskAroundTheReceiver) {
   EXPECT_TRUE(blocker_search_region({50.0f, 0.0f, 0.0f}, sun, f).empty());
 }
 
+// The penumbra readout's arithmetic: shadow-map depth back to distance from the light, and the
+// similar-triangles width.
+TEST(ShadowDebug, DepthBackToLightDistanceAndPenumbraWidth) {
+  scene::Light sun;
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  sun.position = -sun.direction * 20.0f;
+  const scene::ShadowFrustum f = scene::shadow_frustum(sun, {glm::vec3(-5.0f), glm::vec3(5.0f)});
+  for (float along : {15.0f, 20.0f, 24.0f}) {
+    const glm::vec3 p = sun.position + sun.direction * along;
+    EXPECT_NEAR(light_distance(f, shadow_depth(f, p)), along, 1e-3f) << along;
+  }
+  EXPECT_NEAR(penumbra_width(0.7f, 14.0f, 11.8f), 0.7f * 2.2f / 11.8f, 1e-6f);
+  EXPECT_EQ(penumbra_width(0.7f, 10.0f, 12.0f), 0.0f);  // the "blocker" is behind the receiver
+  EXPECT_EQ(penumbra_width(0.7f, 10.0f, 0.0f), 0.0f);
+}
+
 }  // namespace
 }  // namespace penumbra::sandbox

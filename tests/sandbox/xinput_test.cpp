@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -395,6 +396,30 @@ TEST(SandboxXInput, AFrozenLightStaysWhileTheCameraFlies) {
   EXPECT_EQ(s["light_direction"], light);
   EXPECT_NE(s["camera_position"], position);
   EXPECT_NE(s["message"].get<std::string>().find("frozen"), std::string::npos) << s["message"];
+}
+
+// The light's size beside the penumbra it casts: with the blocker search view on, the readout at
+// the cursor on the ball's contact shadow names the light's diameter and a penumbra width from
+// the nearest blocker in the shadow map.
+TEST(SandboxXInput, TheLightSizeShowsBesideThePenumbraItCasts) {
+  const fs::path dir = penumbra::test::fresh_temp_dir("xinput_penumbra_script");
+  std::ofstream(dir / "s.json") << R"([{"debug": {"blocker_region": true}}, {"wait": 100000}])";
+  auto sb = start("penumbra", " --scene ball --size 480x640 --shadow-size 1024 --technique pcss --light-size 0.5 --script " +
+                                  (dir / "s.json").string());
+  const json vp = sb->state()["viewport"];
+  int with_blocker = 0, readouts = 0;
+  for (int y = 100; y < 600; y += 50)
+    for (int x = 40; x < 440; x += 80) {
+      sb->move_to(vp[0].get<int>() + x, vp[1].get<int>() + y);
+      const json s = sb->settle(2);
+      if (!s["texts"].contains("penumbra")) continue;
+      const std::string t = s["texts"]["penumbra"];
+      ++readouts;
+      EXPECT_EQ(t.rfind("light 0.5 wu across", 0), 0u) << t;
+      if (t.find("-> penumbra") != std::string::npos) ++with_blocker;
+    }
+  EXPECT_GT(readouts, 10);
+  EXPECT_GT(with_blocker, 0);
 }
 
 // Frame sequences from the UI: three frames of an orbit into a folder typed in the panel.
