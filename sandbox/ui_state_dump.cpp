@@ -47,7 +47,8 @@ Status write_ui_state(const std::string& path, SandboxController& c, const UiSta
   j["keys"] = ui.probe.keys;
   j["texts"] = ui.probe.texts;
   j["fields"] = {{"preset name", ui.preset_name}, {"glTF", ui.scene_path}, {"screenshot path", ui.screenshot_path},
-                 {"metrics file", ui.metrics_path}};
+                 {"metrics file", ui.metrics_path}, {"into", ui.sequence_dir}, {"save to", ui.save_dir},
+                 {"frames", std::to_string(ui.sequence.frames)}};
   j["scene"] = c.scene_name();
   j["technique"] = c.session().technique();
   technique::TechniqueSession& s = c.session();

@@ -91,6 +91,13 @@ class LiveSandbox {
     auto [x, y] = centre(item);
     click_at(x, y);
   }
+  // Whether `done(state)` holds within `frames` frames.
+  template <class Done>
+  bool within(int frames, Done done) {
+    for (int i = 0; i < frames; ++i)
+      if (done(settle(1))) return true;
+    return false;
+  }
   // Whether the widget shows up within `frames` frames (a list's entries appear once it is drawn).
   bool wait_for_item(const std::string& item, int frames = 20) {
     for (int i = 0; i < frames; ++i)

@@ -85,7 +85,9 @@ TEST(SandboxXInput, CtrlAThenTypingReplacesAFieldAtFourFramesPerSecond) {
   sb->settle(3);
   sb->key("ctrl+a");
   sb->xdo("type --delay 40 soft-look");
-  EXPECT_EQ(sb->settle(10)["fields"]["preset name"], "soft-look");
+  // A character a frame at most (a key's release waits for the next frame): give it 40.
+  EXPECT_TRUE(sb->within(40, [](const json& s) { return s["fields"]["preset name"] == "soft-look"; }))
+      << sb->state()["fields"]["preset name"];
 }
 
 // Defect 3: the history plot was a one-pixel sliver (ImVec2(-1, h) in ImGui 1.86).
@@ -219,7 +221,8 @@ TEST(SandboxXInput, PresetMenuLoadsWithOneClickAndListsSavedOnes) {
   sb->settle(3);
   sb->key("ctrl+a");
   sb->xdo("type --delay 20 narrow");
-  sb->settle(12);  // a character a frame at most: a key's release waits for the next frame
+  ASSERT_TRUE(sb->within(40, [](const json& s) { return s["fields"]["preset name"] == "narrow"; }))
+      << sb->state()["fields"]["preset name"];
   sb->click("save as");
   const json& s = sb->settle(4);
   EXPECT_TRUE(fs::exists(sb->dir() / "config/penumbra/presets/pmchss/narrow.json")) << s["message"];
@@ -433,14 +436,15 @@ TEST(SandboxXInput, RecordingFramesFromThePanelWritesNumberedImages) {
   sb->settle(3);
   sb->key("ctrl+a");
   sb->xdo("type --delay 10 '" + seq.string() + "'");
-  sb->settle(int(seq.string().size()) + 4);
+  ASSERT_TRUE(sb->within(200, [&](const json& s) { return s["fields"]["into"] == seq.string(); })) << sb->state()["fields"];
   sb->click("frames");
   sb->settle(3);
   sb->key("ctrl+a");
   sb->xdo("type 3");
-  sb->settle(4);
+  ASSERT_TRUE(sb->within(60, [&](const json& s) { return s["fields"]["frames"] == "3"; })) << sb->state()["fields"];
   sb->click("record");
-  sb->settle(8);
+  EXPECT_TRUE(sb->within(60, [&](const json&) { return fs::exists(seq / "frame_0002.png"); })) << sb->state()["message"];
+  sb->settle(4);
   for (int i = 0; i < 3; ++i) EXPECT_TRUE(fs::exists(seq / ("frame_000" + std::to_string(i) + ".png"))) << i << " " << sb->log();
   EXPECT_FALSE(fs::exists(seq / "frame_0003.png"));
 }
