@@ -1,16 +1,14 @@
 #include "test_support/read_back.h"
 
+#include "util/row_order.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace penumbra::test {
 
 std::vector<float> flip_rows(const std::vector<float>& texels, int width, int height, int channels) {
-  std::vector<float> out(texels.size());
-  const size_t row = static_cast<size_t>(width) * channels;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(texels.begin() + static_cast<size_t>(height - 1 - y) * row, row, out.begin() + y * row);
-  return out;
+  return rows_flipped(texels, static_cast<size_t>(width) * static_cast<size_t>(channels), height);
 }
 
 TextureImage read_texture(const gl::Texture& texture) {
