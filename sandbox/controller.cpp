@@ -152,6 +152,18 @@ Status SandboxController::set_light_direction(glm::vec3 direction) {
   return {};
 }
 
+Status SandboxController::set_light_position(const glm::vec3& position) {
+  if (Status s = light_change_allowed(); !s) return s;
+  light().position = position;
+  return {};
+}
+
+Status SandboxController::set_spot_angle(float radians) {
+  if (Status s = light_change_allowed(); !s) return s;
+  light().spot_angle = radians;
+  return {};
+}
+
 Status SandboxController::set_light_type(scene::LightType type) {
   if (Status s = light_change_allowed(); !s) return s;
   light().type = type;
@@ -246,8 +258,7 @@ Status SandboxController::load_preset(const std::string& name_or_path) {
 // --- debug switches ---------------------------------------------------------------------------
 
 Status SandboxController::set_no_reuse(bool on) {
-  for (technique::TechniqueSession* s : {primary_.get(), secondary_.get(), third_.get()}) {
-    if (!s) continue;
+  for (technique::TechniqueSession* s : sessions()) {
     s->compile_options().no_reuse = on;
     if (Status st = s->recompile(); !st) return note(st);
   }
@@ -255,8 +266,7 @@ Status SandboxController::set_no_reuse(bool on) {
 }
 
 Status SandboxController::set_extended_lifetimes(bool on) {
-  for (technique::TechniqueSession* s : {primary_.get(), secondary_.get(), third_.get()}) {
-    if (!s) continue;
+  for (technique::TechniqueSession* s : sessions()) {
     s->compile_options().extended_lifetimes = on;
     if (Status st = s->recompile(); !st) return note(st);
   }
@@ -264,8 +274,7 @@ Status SandboxController::set_extended_lifetimes(bool on) {
 }
 
 void SandboxController::set_immediate(bool on) {
-  primary_->executor().options().immediate = on;
-  for (technique::TechniqueSession* s : partners()) s->executor().options().immediate = on;
+  for (technique::TechniqueSession* s : sessions()) s->executor().options().immediate = on;
 }
 
 // --- viewer and compare -----------------------------------------------------------------------
@@ -306,10 +315,16 @@ Status SandboxController::configure_secondary() {
   return configure_partner(*secondary_, *primary_, compare_.with, width_, height_);
 }
 
-std::vector<technique::TechniqueSession*> SandboxController::partners() {
+std::vector<technique::TechniqueSession*> SandboxController::partners() const {
   std::vector<technique::TechniqueSession*> out;
   for (technique::TechniqueSession* s : {secondary_.get(), third_.get()})
     if (s) out.push_back(s);
+  return out;
+}
+
+std::vector<technique::TechniqueSession*> SandboxController::sessions() const {
+  std::vector<technique::TechniqueSession*> out = {primary_.get()};
+  for (technique::TechniqueSession* s : partners()) out.push_back(s);
   return out;
 }
 
@@ -390,16 +405,14 @@ Status SandboxController::resize(int width, int height) {
 }
 
 void SandboxController::reload_shaders() {
-  primary_->shaders().reload_changed();
-  for (technique::TechniqueSession* p : partners()) p->shaders().reload_changed();
+  for (technique::TechniqueSession* s : sessions()) s->shaders().reload_changed();
   display_.shaders().reload_changed();
 }
 
 std::vector<Error> SandboxController::shader_errors() const {
-  std::vector<Error> all = primary_->shaders().errors();
-  for (technique::TechniqueSession* p : {secondary_.get(), third_.get()})
-    if (p)
-      for (Error& e : p->shaders().errors()) all.push_back(std::move(e));
+  std::vector<Error> all;
+  for (technique::TechniqueSession* s : sessions())
+    for (Error& e : s->shaders().errors()) all.push_back(std::move(e));
   for (Error& e : display_.shaders().errors()) all.push_back(std::move(e));
   return all;
 }
@@ -476,8 +489,7 @@ Status SandboxController::render_and_compose() {
   }
   ++frames_;
 
-  if (viewer_.auto_range && !viewer_.resource.empty() && frames_ % 15 == 1) (void)apply_auto_range(*this);
-  if (viewer_.histogram && !viewer_.resource.empty() && frames_ % 15 == 1) (void)update_histogram(*this);
+  if (frames_ % 15 == 1) refresh_viewed(*this);
   return compose_frame(display_, {*primary_, comparing ? secondary_.get() : nullptr,
                                   comparing && compare_.three_way ? third_.get() : nullptr, compare_, viewer_, width_,
                                   height_, debug_views_.texel_density});

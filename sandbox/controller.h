@@ -82,6 +82,8 @@ class SandboxController {
   Status set_light_direction(glm::vec3 direction);
   Status set_light_type(scene::LightType type);
   Status set_light_size(float diameter);
+  Status set_light_position(const glm::vec3& position);
+  Status set_spot_angle(float radians);
   // Space in the window: the light looks where the camera looks (Sterna's demo).
   Status align_light_with_camera();
   // A frozen light (and so its shadow frustum, which is fitted to the scene, never to the camera)
@@ -89,8 +91,6 @@ class SandboxController {
   // script's light step) is refused with a message until it is unfrozen.
   void set_light_frozen(bool frozen) { light_frozen_ = frozen; }
   bool light_frozen() const { return light_frozen_; }
-  // An error when the light is frozen (the message says how to unfreeze it).
-  Status light_change_allowed();
   Status set_shadow_size(int texels);
 
   // --- technique and parameters -------------------------------------------------------------
@@ -194,7 +194,9 @@ class SandboxController {
   Status render_and_compose();
   void update_compare_stats();
   void pose_for_sequence();
-  std::vector<technique::TechniqueSession*> partners();  // secondary and third, those that exist
+  Status light_change_allowed();  // an error (noted) when the light is frozen, saying how to unfreeze it
+  std::vector<technique::TechniqueSession*> partners() const;  // secondary and third, those that exist
+  std::vector<technique::TechniqueSession*> sessions() const;  // the primary, then partners()
   Status save_sequence_frame();
 
   struct Recording {

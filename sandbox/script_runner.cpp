@@ -79,17 +79,18 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
                           step.camera.pitch_deg);
     case StepKind::light:
       if (step.light.frozen) c.set_light_frozen(*step.light.frozen);
-      if (!step.light.type && !step.light.position && !step.light.direction && !step.light.spot_angle_deg && !step.light.size)
-        return {};
-      if (Status s = c.light_change_allowed(); !s) return s;
       if (step.light.type)
-        (void)c.set_light_type(*step.light.type == "spot"    ? scene::LightType::spot
-                               : *step.light.type == "point" ? scene::LightType::point
-                                                             : scene::LightType::directional);
-      if (step.light.position) c.light().position = *step.light.position;
+        if (Status s = c.set_light_type(*step.light.type == "spot"    ? scene::LightType::spot
+                                        : *step.light.type == "point" ? scene::LightType::point
+                                                                      : scene::LightType::directional);
+            !s)
+          return s;
+      if (step.light.position)
+        if (Status s = c.set_light_position(*step.light.position); !s) return s;
       if (step.light.direction)
         if (Status s = c.set_light_direction(*step.light.direction); !s) return s;
-      if (step.light.spot_angle_deg) c.light().spot_angle = glm::radians(*step.light.spot_angle_deg);
+      if (step.light.spot_angle_deg)
+        if (Status s = c.set_spot_angle(glm::radians(*step.light.spot_angle_deg)); !s) return s;
       if (step.light.size) return c.set_light_size(*step.light.size);
       return {};
     case StepKind::shadow_size: return c.set_shadow_size(step.number);

@@ -179,14 +179,15 @@ void light_panel(SandboxController& c, UiState& ui) {
             "(six shadow-map faces), one-map techniques need it outside them");
   glm::vec3 dir = l.direction;
   if (ImGui::DragFloat3("direction", &dir.x, 0.01f, -1.0f, 1.0f)) (void)c.set_light_direction(dir);
-  ImGui::DragFloat3("position", &l.position.x, 0.05f);
+  glm::vec3 position = l.position;
+  if (ImGui::DragFloat3("position", &position.x, 0.05f)) (void)c.set_light_position(position);
   tooltip(l.type == scene::LightType::point ? "emitter sphere centre, world units" : "emitter disk centre, world units");
   float size = l.size;
   if (ImGui::DragFloat("size", &size, 0.005f, 0.0f, 100.0f, "%.3f")) (void)c.set_light_size(std::max(size, 0.0f));
   tooltip(l.type == scene::LightType::point ? "emitter sphere DIAMETER, world units" : "emitter disk DIAMETER, world units");
   if (l.type == scene::LightType::spot) {
     float deg = glm::degrees(l.spot_angle);
-    if (ImGui::SliderFloat("spot angle", &deg, 1.0f, 89.0f, "%.0f deg")) l.spot_angle = glm::radians(deg);
+    if (ImGui::SliderFloat("spot angle", &deg, 1.0f, 89.0f, "%.0f deg")) (void)c.set_spot_angle(glm::radians(deg));
   }
   if (frozen) ImGui::EndDisabled();
   static const int kSizes[] = {256, 512, 1024, 2048, 4096};

@@ -43,26 +43,39 @@ Result<ViewedImage> read_viewed(SandboxController& c, const std::string& what) {
   return img;
 }
 
-Result<glm::vec2> resource_range(SandboxController& c) {
-  Result<ViewedImage> img = read_viewed(c, "auto range");
-  if (!img) return img.error();
+namespace {
+
+Result<glm::vec2> range_of(const ViewedImage& img, const std::string& resource) {
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-  for (float x : img->values)
+  for (float x : img.values)
     if (std::isfinite(x)) {
       lo = std::min(lo, x);
       hi = std::max(hi, x);
     }
-  if (!(lo <= hi)) return make_error("auto range: '" + c.viewer().resource + "' holds no finite value");
+  if (!(lo <= hi)) return make_error("auto range: '" + resource + "' holds no finite value");
   return glm::vec2(lo, hi);
 }
 
-Status apply_auto_range(SandboxController& c) {
-  Result<glm::vec2> r = resource_range(c);
+Status apply_range(ViewerSettings& v, const ViewedImage& img) {
+  Result<glm::vec2> r = range_of(img, v.resource);
   if (!r) return r.error();
   const float pad = r->y > r->x ? 0.0f : 1e-6f * std::max(1.0f, std::abs(r->x));
-  c.viewer().min = r->x - pad;
-  c.viewer().max = r->y + pad;
+  v.min = r->x - pad;
+  v.max = r->y + pad;
   return {};
+}
+
+}  // namespace
+
+Result<glm::vec2> resource_range(SandboxController& c) {
+  Result<ViewedImage> img = read_viewed(c, "auto range");
+  if (!img) return img.error();
+  return range_of(*img, c.viewer().resource);
+}
+
+Status apply_auto_range(SandboxController& c) {
+  Result<ViewedImage> img = read_viewed(c, "auto range");
+  return img ? apply_range(c.viewer(), *img) : Status(img.error());
 }
 
 Status update_histogram(SandboxController& c) {
@@ -73,6 +86,15 @@ Status update_histogram(SandboxController& c) {
   }
   c.viewer().counts = histogram(img->values, c.viewer().min, c.viewer().max, kHistogramBins);
   return {};
+}
+
+void refresh_viewed(SandboxController& c) {
+  ViewerSettings& v = c.viewer();
+  if (v.resource.empty() || (!v.auto_range && !v.histogram)) return;
+  Result<ViewedImage> img = read_viewed(c, "viewer");  // one read-back for both
+  if (!img) return;
+  if (v.auto_range) (void)apply_range(v, *img);
+  if (v.histogram) v.counts = histogram(img->values, v.min, v.max, kHistogramBins);
 }
 
 std::optional<ViewFormat> parse_view_format(const std::string& name) {

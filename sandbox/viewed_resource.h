@@ -34,6 +34,8 @@ Status apply_auto_range(SandboxController& c);
 // The viewer's histogram (ViewerSettings::counts) of the viewed channel over [min, max].
 inline constexpr int kHistogramBins = 64;
 Status update_histogram(SandboxController& c);
+// Every ~15 frames: the range (when it follows the resource) and the histogram from one read-back.
+void refresh_viewed(SandboxController& c);
 
 enum class ViewFormat { png, pfm };
 // "png" | "pfm"; none for another name.

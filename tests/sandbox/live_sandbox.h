@@ -85,6 +85,19 @@ class LiveSandbox {
     settle(2);  // ImGui hovers on one frame and takes the click on the next
     xdo("click 1");
   }
+  // Presses the left button at (x0, y0), moves to (x1, y1) in `steps` steps a frame or more
+  // apart (ImGui drags by the motion it sees each frame), and releases it there.
+  void drag(int x0, int y0, int x1, int y1, int steps = 2) {
+    move_to(x0, y0);
+    settle(2);
+    xdo("mousedown 1");
+    settle(2);
+    for (int i = 1; i <= steps; ++i) {
+      move_to(x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps);
+      settle(2);
+    }
+    xdo("mouseup 1");
+  }
   // Scrolls the panel until the widget is inside the window, then clicks its centre.
   void click(const std::string& item) {
     scroll_into_view(item);

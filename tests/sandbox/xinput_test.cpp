@@ -192,15 +192,7 @@ TEST(SandboxXInput, DraggingTheDividerWidensThePanel) {
   const json& s = sb->state();
   const int before = s["panel"][2].get<int>();
   const int dx = s["divider"][0].get<int>() + s["divider"][2].get<int>() / 2, dy = s["divider"][1].get<int>() + 200;
-  sb->move_to(dx, dy);
-  sb->settle(2);
-  sb->xdo("mousedown 1");
-  sb->settle(2);
-  for (int step = 1; step <= 4; ++step) {
-    sb->move_to(dx + 20 * step, dy);
-    sb->settle(1);
-  }
-  sb->xdo("mouseup 1");
+  sb->drag(dx, dy, dx + 80, dy, 4);
   const json& after = sb->settle(4);
   EXPECT_NEAR(after["panel"][2].get<int>(), before + 80, 6);
   EXPECT_EQ(after["viewport"][0].get<int>(), after["divider"][0].get<int>() + after["divider"][2].get<int>());
@@ -339,13 +331,7 @@ TEST(SandboxXInput, ThreeWayCompareHasThreeColumnsAndTwoDividers) {
   const json vp = s["viewport"];
   const int x = vp[0].get<int>() + int(std::lround(s["compare"]["split2"].get<float>() * vp[2].get<float>()));
   const int y = vp[1].get<int>() + vp[3].get<int>() / 2;
-  sb->move_to(x, y);
-  sb->settle(2);
-  sb->xdo("mousedown 1");
-  sb->settle(2);
-  sb->move_to(x + 30, y);
-  sb->settle(2);
-  sb->xdo("mouseup 1");
+  sb->drag(x, y, x + 30, y, 1);
   s = sb->settle(4);
   EXPECT_NEAR(s["compare"]["split2"].get<float>(), 2.0f / 3.0f + 30.0f / vp[2].get<float>(), 0.02f);
   EXPECT_NEAR(s["compare"]["split"].get<float>(), 1.0f / 3.0f, 1e-4f);
@@ -361,15 +347,7 @@ TEST(SandboxXInput, DraggingTheLightGizmoMovesTheLight) {
   ASSERT_TRUE(s["items"].contains("light gizmo")) << s["items"].dump();
   auto [cx, cy] = sb->centre("light gizmo");
   const int r = int(s["items"]["light gizmo"][2].get<float>() / 2);
-  sb->move_to(cx, cy);
-  sb->settle(2);
-  sb->xdo("mousedown 1");
-  sb->settle(2);
-  sb->move_to(cx, cy - r / 2);
-  sb->settle(2);
-  sb->move_to(cx, cy - r + 2);
-  sb->settle(2);
-  sb->xdo("mouseup 1");
+  sb->drag(cx, cy, cx, cy - r + 2);
   s = sb->settle(3);
   const json d = s["light_direction"], f = s["camera_forward"];
   const float fx = f[0].get<float>(), fz = f[2].get<float>(), fl = std::sqrt(fx * fx + fz * fz);
