@@ -32,7 +32,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"shadow-size", true, false, "N,...", "shadow-map sizes in texels (default 2048); one row per size"},
     {"frames", true, false, "N", "measured frames per row (default 200, at most 240)"},
     {"warmup", true, false, "N", "frames rendered before measuring (default 10)"},
-    {"set", true, true, "k=v", "set a parameter of every technique that has it"},
+    {"set", true, true, kAssignmentValueName, "set a parameter of every technique that has it"},
     {"json", true, false, "OUT.json", "write the results as JSON"},
     {"no-peaks", false, false, "", "skip measuring the copy and texture-fetch peaks (GB/s and % of peak stay 0)"},
     context_option_spec(),

@@ -39,7 +39,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"size", true, false, "WxH", "image size in pixels (default 480x270)"},
     {"shadow-size", true, false, "N", "shadow-map size in texels (default 2048)"},
     {"rays", true, false, "M", "reference rays per pixel (default 64)"},
-    {"set", true, true, "k=v", "set a parameter of the technique (and the reference) that has it"},
+    {"set", true, true, kAssignmentValueName, "set a parameter of the technique (and the reference) that has it"},
     {"no-cache", false, false, "", "render the references even when cached ones match"},
     context_option_spec(),
     plugin_dir_option_spec(),

@@ -11,6 +11,7 @@
 
 #include "cli/command.h"
 #include "util/file_write.h"
+#include "util/output_batch.h"
 #include "cli/context_option.h"
 #include "cli/options/plugin_option.h"
 #include "measurement/eval_capture.h"
@@ -43,7 +44,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"json", true, false, "OUT.json", "write the results as JSON"},
     {"heatmaps", true, false, "DIR", "write one error heat-map PNG per technique into DIR"},
     {"masks", true, false, "DIR", "write each technique's shadow mask and the reference's as grey PNGs into DIR"},
-    {"set", true, true, "k=v", "set a parameter of every listed technique (and the reference) that has it"},
+    {"set", true, true, kAssignmentValueName, "set a parameter of every listed technique (and the reference) that has it"},
     {"no-cache", false, false, "", "render the reference even when a cached one matches, and do not cache it"},
     {"flicker", true, false, "pan|light", "also measure temporal stability over a slow camera pan or light motion"},
     {"flicker-frames", true, false, "N", "frames of the --flicker motion (default 8; each needs a reference)"},
@@ -115,6 +116,17 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const technique::
   o.json = args.get("json").value_or("");
   o.heatmaps = args.get("heatmaps").value_or("");
   o.masks = args.get("masks").value_or("");
+  // Odd places are refused before the reference is rendered, not after.
+  if (!o.json.empty())
+    if (Status s = check_output_path(o.json); !s) return s.error();
+  for (const std::string& dir : {o.heatmaps, o.masks}) {
+    std::error_code ec;
+    if (!dir.empty() && std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+      Error e = make_error("is not a directory");
+      e.file = dir;
+      return e;
+    }
+  }
   o.use_cache = !args.has("no-cache");
   o.sets = args.all("set");
   std::vector<std::string> with_reference = technique_names(o.techniques);
@@ -130,41 +142,47 @@ std::string file_label(const std::string& label) {
   return out;
 }
 
-Status create_output_dir(const std::string& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!ec) return {};
-  Error e = make_error("cannot create the output directory: " + ec.message());
-  e.file = dir;
-  return e;
-}
-
+// Every output or none (util/output_batch.h): a report beside heat maps of another run misleads.
 Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::vector<metrics::MaskImage>& masks,
                      const metrics::MaskImage& reference, const metrics::CoverageMask& coverage) {
+  OutputBatch out;
+  std::vector<std::string> written;
+  auto write = [&](const std::string& path, auto&& write_to) -> Status {
+    Result<std::string> tmp = out.staged(path);
+    if (!tmp) return out.not_written(tmp.error());
+    if (Status s = write_to(*tmp); !s) {
+      Error e = s.error();
+      e.file = path;
+      return out.not_written(e);
+    }
+    written.push_back(path);
+    return {};
+  };
   if (!o.heatmaps.empty()) {
-    if (Status s = create_output_dir(o.heatmaps); !s) return s;
+    if (Status s = out.create_directory(o.heatmaps); !s) return out.not_written(s.error());
     for (size_t i = 0; i < masks.size(); ++i) {
       auto map = metrics::error_heat_map(masks[i], reference, coverage, kHeatMapScale);
       if (!map) return map.error();
       const std::string path = o.heatmaps + "/" + report.scene + "_" + file_label(report.rows[i].technique) + "_error.png";
-      if (Status s = metrics::write_png(path, *map); !s) return s;
-      std::printf("wrote %s\n", path.c_str());
+      if (Status s = write(path, [&](const std::string& tmp) { return metrics::write_png(tmp, *map); }); !s) return s;
     }
   }
   if (!o.masks.empty()) {
-    if (Status s = create_output_dir(o.masks); !s) return s;
+    if (Status s = out.create_directory(o.masks); !s) return out.not_written(s.error());
     for (size_t i = 0; i <= masks.size(); ++i) {
       const bool is_reference = i == masks.size();
       const std::string path = o.masks + "/" + report.scene + "_" +
                                (is_reference ? std::string(kReferenceTechnique) : file_label(report.rows[i].technique)) + "_mask.png";
-      if (Status s = metrics::write_png(path, is_reference ? reference : masks[i]); !s) return s;
-      std::printf("wrote %s\n", path.c_str());
+      const metrics::MaskImage& mask = is_reference ? reference : masks[i];
+      if (Status s = write(path, [&](const std::string& tmp) { return metrics::write_png(tmp, mask); }); !s) return s;
     }
   }
   if (!o.json.empty()) {
-    if (Status s = write_file_whole(o.json, eval_report_json(report)); !s) return s;
-    std::printf("wrote %s\n", o.json.c_str());
+    const std::string text = eval_report_json(report);
+    if (Status s = write(o.json, [&](const std::string& tmp) { return write_file_whole(tmp, text); }); !s) return s;
   }
+  if (Status s = out.commit(); !s) return s;
+  for (const std::string& path : written) std::printf("wrote %s\n", path.c_str());
   return {};
 }
 

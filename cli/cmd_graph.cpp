@@ -9,9 +9,11 @@
 #include "graph/exposures.h"
 #include "graph/graph_json.h"
 #include "cli/command.h"
+#include "cli/options/args.h"
 #include "pass_registry.h"
 #include "technique/frame_graph.h"
 #include "util/file_write.h"
+#include "util/output_batch.h"
 
 namespace penumbra::cli {
 
@@ -140,11 +142,11 @@ int run(const std::vector<std::string>& args) {
           !parse_positive(std::string_view(v).substr(x + 1), settings.screen_h, 16384))
         return usage_error("--screen expects WxH, e.g. 1280x720");
     } else if (!a.empty() && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
+      return usage_error("unknown option '" + shortened(a) + "'");
     } else if (file.empty()) {
       file = a;
     } else {
-      return usage_error("one graph file expected, got also '" + a + "'");
+      return usage_error("one graph file expected, got also '" + shortened(a) + "'");
     }
   }
   auto library = cli_pass_library(plugin_dirs);
@@ -154,6 +156,7 @@ int run(const std::vector<std::string>& args) {
   }
   if (pass_types) return print_pass_types(library->declarations());
   if (file.empty()) return usage_error("missing FILE.json");
+  if (Status st = check_assignment_keys("--set", sets); !st) return usage_error(st.error().to_string());
   if (frame && no_frame) return usage_error("--frame and --no-frame exclude each other");
 
   graph::Checked<graph::GraphDesc> desc = graph::load_graph_json(file);
@@ -186,12 +189,22 @@ int run(const std::vector<std::string>& args) {
     for (const auto& e : plan.errors()) std::cerr << e.to_string() << "\n";
     return 2;
   }
+  OutputBatch outputs;  // --dot and --json together or neither
   for (const auto& [path, text] : {std::pair{dot_path, graph::to_dot(*plan)}, std::pair{json_path, graph::to_json(*plan)}}) {
     if (path.empty()) continue;
-    if (Status st = write_file_whole(path, text); !st) {
-      std::cerr << "penumbra graph: " << st.error().to_string() << "\n";
-      return st.error().exit_code();
+    Result<std::string> tmp = outputs.staged(path);
+    Status st = tmp ? write_file_whole(*tmp, text) : Status(tmp.error());
+    if (!st) {
+      Error e = st.error();
+      e.file = path;
+      e = outputs.not_written(e);
+      std::cerr << "penumbra graph: " << e.to_string() << "\n";
+      return e.exit_code();
     }
+  }
+  if (Status st = outputs.commit(); !st) {
+    std::cerr << "penumbra graph: " << st.error().to_string() << "\n";
+    return st.error().exit_code();
   }
   if (print_plan) std::cout << graph::to_text(*plan);
   if (print_traffic) std::cout << graph::traffic_table(*plan);

@@ -11,6 +11,8 @@
 #include "measurement/progressive_render.h"
 #include "technique/technique_session.h"
 #include "techniques/builtin_techniques.h"
+#include "util/file_write.h"
+#include "util/output_batch.h"
 
 namespace penumbra::cli {
 namespace {
@@ -18,7 +20,7 @@ namespace {
 const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
     {"technique", true, false, "T", "technique name (default pcss if registered, else the first); see 'penumbra techniques'"},
-    {"set", true, true, "k=v", "set a technique parameter"},
+    {"set", true, true, kAssignmentValueName, "set a technique parameter"},
     {"size", true, false, "WxH", "image size in pixels (default 640x360)"},
     {"shadow-size", true, false, "N", "shadow-map size in texels (default 2048)"},
     {"out", true, false, "OUT.png", "write the lit image"},
@@ -47,18 +49,22 @@ Status finish_progressive(technique::TechniqueSession& session) {
   });
 }
 
-Status write_outputs(technique::TechniqueSession& session, const std::string& out, const std::string& mask) {
-  if (!out.empty()) {
-    gl::Texture* color = session.executor().resource("color");
-    if (!color) return make_error("the frame has no 'color' resource", ErrorKind::internal);
-    if (Status s = gl::write_texture_png(*color, out); !s) return s;
-    std::printf("wrote %s\n", out.c_str());
-  }
-  if (!mask.empty()) {
-    gl::Texture* m = session.executor().resource("shadow_mask");
-    if (!m) return make_error("the technique wrote no 'shadow_mask'", ErrorKind::internal);
-    if (Status s = gl::write_texture_png(*m, mask); !s) return s;
-    std::printf("wrote %s\n", mask.c_str());
+// Staged in `batch`: --out and --mask, and every technique of --all-techniques, appear together
+// once all rendered, or none does (util/output_batch.h).
+Status write_outputs(technique::TechniqueSession& session, OutputBatch& batch, std::vector<std::string>& written,
+                     const std::string& out, const std::string& mask) {
+  for (const auto& [path, resource] : {std::pair{out, "color"}, std::pair{mask, "shadow_mask"}}) {
+    if (path.empty()) continue;
+    gl::Texture* texture = session.executor().resource(resource);
+    if (!texture) return make_error(std::string("the frame has no '") + resource + "' resource", ErrorKind::internal);
+    Result<std::string> tmp = batch.staged(path);
+    if (!tmp) return batch.not_written(tmp.error());
+    if (Status s = gl::write_texture_png(*texture, *tmp); !s) {
+      Error e = s.error();
+      e.file = path;
+      return batch.not_written(e);
+    }
+    written.push_back(path);
   }
   return {};
 }
@@ -92,6 +98,9 @@ int cmd_render(const std::vector<std::string>& argv) {
   bool all = args->has("all-techniques");
   std::string out = args->get("out").value_or(""), mask = args->get("mask").value_or("");
   if (!all && out.empty() && mask.empty()) out = "render.png";
+  for (const std::string& path : {out, mask})  // before rendering, not after
+    if (!all && !path.empty())
+      if (Status s = check_output_path(path); !s) return fail(s.error());
 
   technique::TechniqueRegistry registry;
   if (Status s = register_all_techniques(registry, args->all("plugin-dir")); !s) return fail(s.error());
@@ -103,7 +112,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (!registry.find(t)) {
       std::string valid;
       for (const std::string& n : registry.names()) valid += (valid.empty() ? "" : ", ") + n;
-      return fail(make_error("unknown technique '" + t + "' (available: " + valid + ")"));
+      return fail(make_error("unknown technique '" + shortened(t) + "' (available: " + valid + ")"));
     }
     techniques = {t};
   }
@@ -120,15 +129,10 @@ int cmd_render(const std::vector<std::string>& argv) {
   if (Status s = session.set_shadow_size(shadow); !s) return fail(s.error());
 
   std::string dir = args->get("out-dir").value_or("out");
-  if (all) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) {
-      Error e = make_error("cannot create output directory: " + ec.message());
-      e.file = dir;
-      return fail(e);
-    }
-  }
+  OutputBatch batch;
+  std::vector<std::string> written;
+  if (all)
+    if (Status s = batch.create_directory(dir); !s) return fail(s.error());
   for (const std::string& t : techniques) {
     if (Status s = session.set_technique(t); !s) return fail(s.error());
     for (const std::string& kv : args->all("set"))
@@ -144,8 +148,10 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (Status s = finish_progressive(session); !s) return fail(s.error());
     std::string o = all ? dir + "/" + scene->name + "_" + t + ".png" : out;
     std::string m = all ? dir + "/" + scene->name + "_" + t + "_mask.png" : mask;
-    if (Status s = write_outputs(session, o, m); !s) return fail(s.error());
+    if (Status s = write_outputs(session, batch, written, o, m); !s) return fail(s.error());
   }
+  if (Status s = batch.commit(); !s) return fail(s.error());
+  for (const std::string& path : written) std::printf("wrote %s\n", path.c_str());
   return 0;
 }
 

@@ -83,7 +83,7 @@ Result<std::vector<FreeParam>> free_params(const graph::ParameterSet& params, co
                         ": only float and int parameters can be fitted (set the others with :k=v)");
     if (!d->has_range()) return make_error("parameter '" + name + "' has no range to search");
     if (std::any_of(space.begin(), space.end(), [&](const FreeParam& p) { return p.desc.name == name; }))
-      return make_error("parameter '" + name + "' is listed twice");
+      return make_error("parameter '" + shortened(name) + "' is listed twice");
     space.push_back({*d, d->min > 0.0 && d->max / d->min >= kLogScaleSpan});
   }
   return space;

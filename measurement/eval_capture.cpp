@@ -102,7 +102,7 @@ Status check_set_keys(const technique::TechniqueRegistry& registry, const std::v
     if (!known) {
       std::string list;
       for (const std::string& t : techniques) list += (list.empty() ? "" : ", ") + t;
-      Error e = make_error("no technique among " + list + " has a parameter '" + key + "'");
+      Error e = make_error("no technique among " + list + " has a parameter '" + shortened(key) + "'");
       e.where = "--set " + kv;
       return e;
     }
@@ -128,7 +128,7 @@ Result<std::vector<std::string>> split_list(const std::string& option, const std
   while (true) {
     const size_t comma = text.find(',', start);
     std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (item.empty()) return make_error("--" + option + " expects a comma-separated list without empty items, got '" + text + "'");
+    if (item.empty()) return make_error("--" + option + " expects a comma-separated list without empty items, got '" + shortened(text) + "'");
     items.push_back(item);
     if (comma == std::string::npos) break;
     start = comma + 1;

@@ -12,6 +12,8 @@
 #include "measurement/eval_capture.h"
 #include "measurement/progressive_render.h"
 #include "technique/frame_graph.h"
+#include "metrics/reference_cache_file.h"
+#include "util/file_read.h"
 #include "util/file_write.h"
 
 namespace penumbra::measurement {
@@ -22,7 +24,6 @@ namespace fs = std::filesystem;
 
 // Bump when the reference's algorithm or this file format changes: old entries stop matching.
 constexpr const char* kCacheFormat = "penumbra-reference-cache 1";
-constexpr char kMagic[8] = {'P', 'N', 'M', 'B', 'R', 'E', 'F', '1'};
 
 fs::path cache_dir() {
   if (const char* d = std::getenv("PENUMBRA_CACHE_DIR"); d && *d)
@@ -73,36 +74,33 @@ std::string fnv1a_hex(const std::string& text) {
   return buf;
 }
 
-bool read_cache(const fs::path& file, const std::string& key, ReferenceFrame& out) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return false;
-  char magic[8];
-  std::uint32_t key_size = 0, w = 0, h = 0;
-  if (!in.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0) return false;
-  if (!in.read(reinterpret_cast<char*>(&key_size), 4) || key_size > (1u << 20)) return false;
-  std::string stored(key_size, '\0');
-  if (!in.read(stored.data(), key_size) || stored != key) return false;  // a hash collision
-  if (!in.read(reinterpret_cast<char*>(&w), 4) || !in.read(reinterpret_cast<char*>(&h), 4)) return false;
-  if (w == 0 || h == 0 || w > 16384 || h > 16384) return false;
-  out.mask = metrics::MaskImage(static_cast<int>(w), static_cast<int>(h));
-  out.coverage.assign(static_cast<size_t>(w) * h, 0);
-  return in.read(reinterpret_cast<char*>(out.mask.pixels.data()), static_cast<std::streamsize>(out.mask.pixels.size() * 4)) &&
-         in.read(reinterpret_cast<char*>(out.coverage.data()), static_cast<std::streamsize>(out.coverage.size()));
+// The cached reference for `key`, if a sound one is there. A damaged file (truncated, NaN or
+// out-of-range pixels, another size) is reported and rendered again: the new one replaces it.
+bool read_cache(const fs::path& file, const std::string& key, const technique::TechniqueSession& session,
+                ReferenceFrame& out) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return false;
+  const int w = session.settings().screen_w, h = session.settings().screen_h;
+  Result<std::string> bytes = read_file_whole(file.string(), metrics::reference_cache_size(key, w, h));
+  bool other_frame = false;
+  Result<metrics::CachedReference> cached =
+      bytes ? metrics::parse_reference_cache(*bytes, key, w, h, &other_frame) : Result<metrics::CachedReference>(bytes.error());
+  if (!cached) {
+    if (!other_frame)
+      spdlog::warn("{}: reference cache entry not used ({}); rendering the reference again and replacing it",
+                   file.string(), cached.error().message);
+    return false;
+  }
+  out.mask = std::move(cached->mask);
+  out.coverage = std::move(cached->coverage);
+  return true;
 }
 
 void write_cache(const fs::path& file, const std::string& key, const ReferenceFrame& frame) {
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
-  std::string bytes(kMagic, 8);
-  auto put32 = [&](std::uint32_t v) { bytes.append(reinterpret_cast<const char*>(&v), 4); };
-  put32(static_cast<std::uint32_t>(key.size()));
-  bytes += key;
-  put32(static_cast<std::uint32_t>(frame.mask.width));
-  put32(static_cast<std::uint32_t>(frame.mask.height));
-  bytes.append(reinterpret_cast<const char*>(frame.mask.pixels.data()), frame.mask.pixels.size() * 4);
-  bytes.append(reinterpret_cast<const char*>(frame.coverage.data()), frame.coverage.size());
   // A cache that cannot be written is not an error: the reference was computed.
-  if (Status s = write_file_whole(file.string(), bytes); !s)
+  if (Status s = write_file_whole(file.string(), metrics::format_reference_cache(key, frame.mask, frame.coverage)); !s)
     spdlog::warn("reference cache not written: {}", s.error().to_string());
 }
 
@@ -129,7 +127,7 @@ Result<ReferenceFrame> reference_frame(technique::TechniqueSession& session, con
   const std::string key = cache_key(session);
   const fs::path dir = cache_dir();
   const fs::path file = dir.empty() ? fs::path() : dir / (fnv1a_hex(key) + ".bin");
-  if (settings.use_cache && !file.empty() && read_cache(file, key, frame)) {
+  if (settings.use_cache && !file.empty() && read_cache(file, key, session, frame)) {
     frame.from_cache = true;
     frame.cache_file = file.string();
     return frame;

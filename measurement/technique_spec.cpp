@@ -40,10 +40,17 @@ Result<std::vector<TechniqueSpec>> parse_technique_specs(const std::string& opti
     if (!graph) return graph.error();
     graph::ParameterSet params(graph->parameters);
     if (at != std::string::npos) {
-      auto preset = technique::load_preset(*technique, parts[0].substr(at + 1));
-      if (!preset) return make_error("--" + option + " item '" + shortened(item) + "': " + preset.error().message);
+      // The preset's errors keep their file, line and column; the item is named before them.
+      const std::string preset_name = parts[0].substr(at + 1);
+      auto in_item = [&](Error e) {
+        e.message = "--" + option + " item '" + shortened(item) + "': " + e.message;
+        if (e.file.empty() && technique::is_preset_path(preset_name)) e.file = preset_name;
+        return e;
+      };
+      auto preset = technique::load_preset(*technique, preset_name);
+      if (!preset) return in_item(preset.error());
       auto applied = technique::preset_applied(*preset, spec.name, params);
-      if (!applied) return make_error("--" + option + " item '" + shortened(item) + "': " + applied.error().message);
+      if (!applied) return in_item(applied.error());
       params = std::move(*applied);
       spec.preset_json = preset->parameters_json;
     }

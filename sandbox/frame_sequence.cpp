@@ -1,5 +1,7 @@
 #include "sandbox/frame_sequence.h"
 
+#include "util/file_read.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -27,9 +29,9 @@ Status check_sequence(const SequenceSpec& spec) {
     return make_error("a sequence has 1.." + std::to_string(kMaxSequenceFrames) + " frames, got " + std::to_string(spec.frames));
   if (!std::isfinite(spec.degrees) || std::abs(spec.degrees) > 3600.0f)
     return make_error("a sequence turns by -3600..3600 degrees, got " + std::to_string(spec.degrees));
-  std::error_code ec;
-  if (spec.dir.empty() || !std::filesystem::is_directory(spec.dir, ec))
-    return make_error("the sequence's folder '" + spec.dir + "' does not exist");
+  if (spec.dir.empty()) return make_error("a sequence needs a folder to write into");
+  if (Status d = check_directory(spec.dir); !d)
+    return make_error("the sequence's folder '" + shortened(spec.dir) + "' " + d.error().message);
   return {};
 }
 

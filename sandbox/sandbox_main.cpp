@@ -61,7 +61,10 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
   if (Status s = plugins.load(o.plugin_dirs, registry); !s) return fail(s.error());
   if (!o.exhaustive_script.empty()) return write_exhaustive(registry, o);
 
-  // A bad script is reported before any window opens.
+  // Output paths and a bad script are reported before any window opens, not after the run.
+  for (const std::string& path : {o.screenshot, o.state_file})
+    if (!path.empty())
+      if (Status s = check_output_path(path); !s) return fail(s.error());
   std::optional<std::vector<ScriptStep>> script;
   if (!o.script.empty()) {
     auto text = read_file_whole(o.script);

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "sandbox/view_mapping.h"
+#include "scene/light.h"
+#include "util/file_read.h"
 #include "util/json_text.h"
 
 namespace penumbra::sandbox {
@@ -67,6 +69,11 @@ float need_number(const json& v, const std::string& what) {
   return static_cast<float>(d);
 }
 
+bool need_bool(const json& v, const std::string& what) {
+  if (!v.is_boolean()) problem(what + " must be true or false, got " + echo(v));
+  return v.get<bool>();
+}
+
 int need_int(const json& v, const std::string& what, int lo, int hi) {
   if (!v.is_number_integer()) problem(what + " must be an integer, got " + echo(v));
   auto i = v.get<long long>();
@@ -116,8 +123,8 @@ void parse_body(ScriptStep& s, const json& v) {
       // Checked before any frame runs: a long script must not fail at its last step.
       const std::filesystem::path dir = std::filesystem::path(s.text).parent_path();
       std::error_code ec;
-      if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
-        problem(key + ": directory '" + shortened(dir.string()) + "' does not exist");
+      if (Status d = dir.empty() ? Status() : check_directory(dir.string()); !d)
+        problem(key + ": '" + shortened(dir.string()) + "' " + d.error().message);
       if (std::filesystem::is_directory(s.text, ec)) problem(key + ": '" + shortened(s.text) + "' is a directory");
       break;
     }
@@ -155,8 +162,7 @@ void parse_body(ScriptStep& s, const json& v) {
       s.format = v.contains("format") ? need_string(v["format"], "save_view.format") : "";
       if (s.format != "png" && s.format != "pfm") problem("save_view.format must be \"png\" or \"pfm\", got \"" + shortened(s.format) + "\"");
       s.text = v.contains("dir") ? need_string(v["dir"], "save_view.dir") : ".";
-      std::error_code ec;
-      if (!std::filesystem::is_directory(s.text, ec)) problem("save_view: directory '" + shortened(s.text) + "' does not exist");
+      if (Status d = check_directory(s.text); !d) problem("save_view: '" + shortened(s.text) + "' " + d.error().message);
       break;
     }
     case StepKind::record: {
@@ -177,14 +183,11 @@ void parse_body(ScriptStep& s, const json& v) {
       only_keys(v, {"light_frustum", "blocker_region", "texel_density", "light_gizmo"}, "debug");
       for (const auto& [key, field] : {std::pair{"light_frustum", &s.light_frustum}, std::pair{"blocker_region", &s.blocker_region},
                                        std::pair{"texel_density", &s.texel_density}, std::pair{"light_gizmo", &s.light_gizmo}})
-        if (v.contains(key)) {
-          if (!v[key].is_boolean()) problem(std::string("debug.") + key + " must be true or false, got " + echo(v[key]));
-          else *field = v[key].get<bool>();
-        }
+        if (v.contains(key)) *field = need_bool(v[key], std::string("debug.") + key);
+      if (v.empty()) problem("debug: give at least one of light_frustum, blocker_region, texel_density, light_gizmo");
       break;
     case StepKind::ground:
-      if (!v.is_boolean()) problem("ground must be true or false, got " + echo(v));
-      s.flag = v.get<bool>();
+      s.flag = need_bool(v, "ground");
       break;
     case StepKind::camera:
       if (v.is_string()) {
@@ -203,10 +206,7 @@ void parse_body(ScriptStep& s, const json& v) {
       break;
     case StepKind::light:
       only_keys(v, {"type", "direction", "position", "size", "spot_angle", "frozen"}, "light");
-      if (v.contains("frozen")) {
-        if (!v["frozen"].is_boolean()) problem("light.frozen must be true or false, got " + echo(v["frozen"]));
-        else s.light.frozen = v["frozen"].get<bool>();
-      }
+      if (v.contains("frozen")) s.light.frozen = need_bool(v["frozen"], "light.frozen");
       if (v.empty()) problem("light: give at least one of type, direction, position, size, spot_angle");
       if (v.contains("type")) {
         s.light.type = need_string(v["type"], "light.type");
@@ -222,8 +222,13 @@ void parse_body(ScriptStep& s, const json& v) {
         s.light.size = need_number(v["size"], "light.size (world units)");
         if (*s.light.size < 0.0f) problem("light.size must be >= 0 (emitter diameter, world units)");
       }
-      if (v.contains("spot_angle"))
+      if (v.contains("spot_angle")) {
         s.light.spot_angle_deg = need_number(v["spot_angle"], "light.spot_angle (degrees)");
+        if (!(*s.light.spot_angle_deg >= scene::kMinSpotAngleDegrees && *s.light.spot_angle_deg <= scene::kMaxSpotAngleDegrees))
+          problem("light.spot_angle must be in [" + std::to_string(static_cast<int>(scene::kMinSpotAngleDegrees)) + ", " +
+                  std::to_string(static_cast<int>(scene::kMaxSpotAngleDegrees)) + "] degrees (the cone's half-angle), got " +
+                  echo(v["spot_angle"]));
+      }
       break;
     case StepKind::compare:
       if (v.is_boolean()) {
@@ -233,11 +238,8 @@ void parse_body(ScriptStep& s, const json& v) {
         s.compare.with = v.get<std::string>();
       } else {
         only_keys(v, {"enabled", "with", "view", "three_way"}, "compare");
-        if (v.contains("three_way")) {
-          if (!v["three_way"].is_boolean()) problem("compare.three_way must be true or false, got " + echo(v["three_way"]));
-          else s.compare.three_way = v["three_way"].get<bool>();
-        }
-        s.compare.enabled = !v.contains("enabled") || v["enabled"] == true;
+        if (v.contains("three_way")) s.compare.three_way = need_bool(v["three_way"], "compare.three_way");
+        s.compare.enabled = !v.contains("enabled") || need_bool(v["enabled"], "compare.enabled");
         if (v.contains("with")) s.compare.with = need_string(v["with"], "compare.with");
         if (v.contains("view")) {
           s.compare.view = need_string(v["view"], "compare.view");
@@ -262,10 +264,7 @@ void parse_body(ScriptStep& s, const json& v) {
           problem("view.center must be [u, v] (uv at the frame's middle), got " + echo(a));
         s.view.center = glm::vec2(a[0].get<float>(), a[1].get<float>());
       }
-      if (v.contains("auto_range")) {
-        if (!v["auto_range"].is_boolean()) problem("view.auto_range must be true or false, got " + echo(v["auto_range"]));
-        s.view.auto_range = v["auto_range"].get<bool>();
-      }
+      if (v.contains("auto_range")) s.view.auto_range = need_bool(v["auto_range"], "view.auto_range");
       if (v.contains("resource")) s.view.resource = need_string(v["resource"], "view.resource");
       if (v.contains("map")) {
         s.view.map = need_string(v["map"], "view.map");
@@ -279,6 +278,8 @@ void parse_body(ScriptStep& s, const json& v) {
       }
       if (v.contains("min")) s.view.min = need_number(v["min"], "view.min");
       if (v.contains("max")) s.view.max = need_number(v["max"], "view.max");
+      if (s.view.min && s.view.max && !(*s.view.min < *s.view.max))
+        problem("view.min must be below view.max, got min " + echo(v["min"]) + " and max " + echo(v["max"]));
       if (v.contains("channel")) s.view.channel = need_int(v["channel"], "view.channel", 0, 3);
       if (v.contains("channels")) {
         const std::string letters = need_string(v["channels"], "view.channels");
@@ -320,7 +321,7 @@ Result<std::vector<ScriptStep>> parse_script(const std::string& text, const std:
     return e;
   };
   // Nesting, numbers that overflow, duplicate keys: refused with their position before parsing.
-  if (std::optional<JsonTextProblem> p = scan_json_text(text, kMaxScriptDepth))
+  if (std::optional<JsonTextProblem> p = scan_json_text(text))
     return fail("script: " + p->message, p->line, p->column);
   json j;
   try {

@@ -92,9 +92,8 @@ struct ScriptStep {
   SequenceSpec sequence;  // record
 };
 
-// Limits of a script (docs/sandbox.md): steps, and nesting of any value.
+// Limits of a script (docs/sandbox.md): steps; nesting is util/json_text.h's kMaxJsonDepth.
 inline constexpr size_t kMaxScriptSteps = 100000;
-inline constexpr int kMaxScriptDepth = 16;
 
 // `source` names the file in errors.
 Result<std::vector<ScriptStep>> parse_script(const std::string& text, const std::string& source);

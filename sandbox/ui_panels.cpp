@@ -187,7 +187,7 @@ void light_panel(SandboxController& c, UiState& ui) {
   tooltip(l.type == scene::LightType::point ? "emitter sphere DIAMETER, world units" : "emitter disk DIAMETER, world units");
   if (l.type == scene::LightType::spot) {
     float deg = glm::degrees(l.spot_angle);
-    if (ImGui::SliderFloat("spot angle", &deg, 1.0f, 89.0f, "%.0f deg")) (void)c.set_spot_angle(glm::radians(deg));
+    if (ImGui::SliderFloat("spot angle", &deg, scene::kMinSpotAngleDegrees, scene::kMaxSpotAngleDegrees, "%.0f deg")) (void)c.set_spot_angle(glm::radians(deg));
   }
   if (frozen) ImGui::EndDisabled();
   static const int kSizes[] = {256, 512, 1024, 2048, 4096};

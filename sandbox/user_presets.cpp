@@ -31,7 +31,7 @@ Result<fs::path> user_preset_path(const fs::path& dir, const std::string& techni
                        return std::isalnum(c) || c == '_' || c == '-' || c == '.';
                      });
   if (!plain)
-    return make_error("preset name '" + name + "' must be 1-64 letters, digits, '_', '-' or '.' (not starting with '.')");
+    return make_error("preset name '" + shortened(name) + "' must be 1-64 letters, digits, '_', '-' or '.' (not starting with '.')");
   return dir / technique / (name + ".json");
 }
 

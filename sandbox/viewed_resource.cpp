@@ -1,5 +1,7 @@
 #include "sandbox/viewed_resource.h"
 
+#include "util/file_read.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,7 +28,7 @@ Result<ViewedImage> read_viewed(SandboxController& c, const std::string& what) {
   const ViewerSettings& v = c.viewer();
   if (v.resource.empty()) return make_error(what + ": no resource is viewed");
   gl::Texture* t = c.session().executor().resource(v.resource);
-  if (!t) return make_error(what + ": '" + v.resource + "' is not produced by the current graph");
+  if (!t) return make_error(what + ": '" + shortened(v.resource) + "' is not produced by the current graph");
   ViewedImage img;
   img.width = t->width();
   img.height = t->height();
@@ -121,9 +123,8 @@ Result<std::string> save_viewed_resource(SandboxController& c, const std::string
   Result<ViewedImage> img = read_viewed(c, "save");
   if (!img) return img.error();
   const ViewerSettings& v = c.viewer();
-  std::error_code ec;
-  if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
-    return make_error("save: '" + dir + "' is not a folder");
+  if (Status d = dir.empty() ? Status() : check_directory(dir); !d)
+    return make_error("save: '" + shortened(dir) + "' " + d.error().message);
   const std::string name = v.resource + "_frame" + std::to_string(c.frames()) + (format == ViewFormat::png ? ".png" : ".pfm");
   const std::string path = (std::filesystem::path(dir.empty() ? "." : dir) / name).string();
   const size_t n = img->values.size(), k = static_cast<size_t>(img->channels);

@@ -13,7 +13,7 @@ work=build/fuzz/run
 rm -rf "$work"
 mkdir -p "$work" build/fuzz/crashes
 status=0
-for target in graph gltf script; do
+for target in graph gltf script preset reference_cache; do
   corpus="$work/$target"
   mkdir -p "$corpus"
   cp tests/fuzz/seeds/"$target"/* "$corpus"/

@@ -53,7 +53,24 @@ Result<ParsedArgs> parse_args(const std::vector<std::string>& args, const std::v
     if (!spec->repeated && !slot.empty()) return make_error("option --" + name + " given twice");
     slot.push_back(value);
   }
+  for (const OptionSpec& spec : specs)
+    if (spec.repeated && spec.value_name == kAssignmentValueName && out.has(spec.name))
+      if (Status s = check_assignment_keys("--" + spec.name, out.all(spec.name)); !s) return s.error();
   return out;
+}
+
+Status check_assignment_keys(const std::string& option, const std::vector<std::string>& assignments) {
+  std::map<std::string, std::string> seen;
+  for (const std::string& kv : assignments) {
+    const std::string key = kv.substr(0, kv.find('='));
+    if (auto [it, inserted] = seen.emplace(key, kv); !inserted) {
+      Error e = make_error("'" + shortened(key) + "' is given twice (" + shortened(it->second) + ", then " +
+                           shortened(kv) + "); give each key once");
+      e.where = option + " " + shortened(kv);
+      return e;
+    }
+  }
+  return {};
 }
 
 std::string format_help(const std::string& usage, const std::string& description,
@@ -86,7 +103,7 @@ Result<int> parse_int(const std::string& option, const std::string& text, int lo
   auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || ptr != text.data() + text.size() || v < lo || v > hi)
     return make_error("--" + option + " expects an integer in [" + std::to_string(lo) + ", " +
-                      std::to_string(hi) + "], got '" + text + "'");
+                      std::to_string(hi) + "], got '" + shortened(text) + "'");
   return v;
 }
 
@@ -95,7 +112,7 @@ Result<double> parse_real(const std::string& option, const std::string& text, do
   const double v = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < lo || v > hi) {
     std::ostringstream m;
-    m << "--" << option << " expects a number in [" << lo << ", " << hi << "], got '" << text << "'";
+    m << "--" << option << " expects a number in [" << lo << ", " << hi << "], got '" << shortened(text) << "'";
     return make_error(m.str());
   }
   return v;
@@ -103,11 +120,11 @@ Result<double> parse_real(const std::string& option, const std::string& text, do
 
 Result<std::pair<int, int>> parse_size(const std::string& option, const std::string& text, int max) {
   auto x = text.find('x');
-  if (x == std::string::npos) return make_error("--" + option + " expects WxH (e.g. 640x360), got '" + text + "'");
+  if (x == std::string::npos) return make_error("--" + option + " expects WxH (e.g. 640x360), got '" + shortened(text) + "'");
   auto w = parse_int(option, text.substr(0, x), 1, max);
   auto h = parse_int(option, text.substr(x + 1), 1, max);
   if (!w || !h) return make_error("--" + option + " expects WxH with each side in [1, " + std::to_string(max) +
-                                  "], got '" + text + "'");
+                                  "], got '" + shortened(text) + "'");
   return std::pair{*w, *h};
 }
 

@@ -10,6 +10,10 @@
 
 namespace penumbra::cli {
 
+// The value name of a repeated option that takes assignments (--set k=v): parse_args refuses a
+// key given twice, which would otherwise silently keep the last value.
+inline constexpr const char* kAssignmentValueName = "k=v";
+
 struct OptionSpec {
   std::string name;        // without the leading dashes
   bool takes_value = true;
@@ -27,6 +31,8 @@ struct ParsedArgs {
 };
 
 Result<ParsedArgs> parse_args(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs);
+// "--set a=1 --set a=2": an error naming the option and the key; for parsers of their own.
+Status check_assignment_keys(const std::string& option, const std::vector<std::string>& assignments);
 std::string format_help(const std::string& usage, const std::string& description,
                         const std::vector<OptionSpec>& specs);
 // --help or -h anywhere on the line (before any parsing, so a bad option does not hide help).

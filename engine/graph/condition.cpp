@@ -62,17 +62,18 @@ class Parser {
     error_ = "nested deeper than " + std::to_string(kMaxConditionDepth) + " levels";
     return false;
   }
+  // The depth counts "!" and "(" as written (each enters once), so the limit reads as the text.
   NodePtr parse_unary() {
-    if (!enter()) return nullptr;
     NodePtr n;
     if (eat("!")) {
+      if (!enter()) return nullptr;
       n = make(Kind::negate, {parse_unary()});
+      --depth_;
     } else {
       n = parse_operand();
       if (error_.empty() && eat("==")) n = make(Kind::equal, {n, parse_operand()});
       else if (error_.empty() && eat("!=")) n = make(Kind::not_equal, {n, parse_operand()});
     }
-    --depth_;
     return n;
   }
   NodePtr parse_operand() {

@@ -114,7 +114,7 @@ Checked<GraphDesc> parse_graph_json(std::string_view text, const std::string& fi
     return GraphErrors{e};
   };
   // Before nlohmann (which recurses, and keeps the last of two equal keys) sees the text.
-  if (std::optional<JsonTextProblem> p = scan_json_text(text, kMaxJsonDepth))
+  if (std::optional<JsonTextProblem> p = scan_json_text(text))
     return fail_at(p->line, p->column, p->message);
   Json root;
   try {

@@ -10,9 +10,6 @@
 
 namespace penumbra::graph {
 
-// Deepest array/object nesting accepted; checked before nlohmann (which recurses) sees it.
-inline constexpr int kMaxJsonDepth = 256;
-
 Checked<GraphDesc> parse_graph_json(std::string_view text, const std::string& file_name = "");
 Checked<GraphDesc> load_graph_json(const std::string& path);
 

@@ -1,4 +1,4 @@
-// ParameterSet <-> JSON presets. One of the two translation units that include nlohmann.
+// ParameterSet <-> JSON. One of the few translation units that include nlohmann.
 #include <nlohmann/json.hpp>
 
 #include "graph/json_values.h"
@@ -10,7 +10,7 @@ namespace penumbra::graph {
 using Json = nlohmann::ordered_json;
 
 Status ParameterSet::apply_json(std::string_view json_text) {
-  if (std::optional<JsonTextProblem> p = scan_json_text(json_text, 64)) {
+  if (std::optional<JsonTextProblem> p = scan_json_text(json_text)) {
     Error e = make_error("parameter JSON: " + p->message);
     e.line = p->line;
     e.column = p->column;

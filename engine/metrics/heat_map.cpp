@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include <stb/stb_image_write.h>
+#include "util/png.h"
 
 namespace penumbra::metrics {
 
@@ -35,24 +35,11 @@ Result<RgbaImage> error_heat_map(const MaskImage& test, const MaskImage& ref, co
   return out;
 }
 
-static Status write_png_bytes(const std::string& path, int w, int h, int channels, const uint8_t* data) {
-  if (w <= 0 || h <= 0 || stbi_write_png(path.c_str(), w, h, channels, data, w * channels) == 0) {
-    std::error_code ec;
-    std::filesystem::remove(path, ec);  // never leave a truncated PNG behind
-    Error e = make_error("could not write PNG (" + std::to_string(w) + "x" + std::to_string(h) +
-                             "): directory missing, not writable or disk full",
-                         ErrorKind::unavailable);
-    e.file = path;
-    return e;
-  }
-  return {};
-}
-
 Status write_png(const std::string& path, const RgbaImage& image) {
   if (image.pixels.size() != static_cast<size_t>(image.width) * image.height * 4)
     return make_error("RGBA image has " + std::to_string(image.pixels.size()) + " bytes for " +
                       std::to_string(image.width) + "x" + std::to_string(image.height));
-  return write_png_bytes(path, image.width, image.height, 4, image.pixels.data());
+  return penumbra::write_png(path, image.width, image.height, 4, image.pixels.data());
 }
 
 Status write_png(const std::string& path, const MaskImage& image) {
@@ -61,7 +48,7 @@ Status write_png(const std::string& path, const MaskImage& image) {
     grey[i] = static_cast<uint8_t>(std::lround(std::clamp(std::isfinite(image.pixels[i]) ? image.pixels[i] : 0.0f, 0.0f, 1.0f) * 255.0f));
   if (grey.size() != static_cast<size_t>(image.width) * image.height)
     return make_error("mask image size does not match its pixel count");
-  return write_png_bytes(path, image.width, image.height, 1, grey.data());
+  return penumbra::write_png(path, image.width, image.height, 1, grey.data());
 }
 
 }  // namespace penumbra::metrics

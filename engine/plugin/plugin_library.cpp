@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "gl/shader_files.h"
+#include "plugin/plugin_file_check.h"
+#include "util/file_read.h"
 
 namespace penumbra::plugin {
 
@@ -17,10 +19,19 @@ Error plugin_error(const fs::path& file, std::string message) {
   return e;
 }
 
+Error abi_mismatch(const fs::path& file, int version) {
+  return plugin_error(file, "plugin ABI version " + std::to_string(version) + ", this Penumbra's is " +
+                                std::to_string(kPluginAbiVersion) + ": rebuild the plugin against this Penumbra");
+}
+
 }  // namespace
 
 Result<PluginLibrary> PluginLibrary::open(const fs::path& file, const fs::path& shown_as) {
   const fs::path shown = shown_as.empty() ? file : shown_as;
+  // The file is checked whole and its ABI read before dlopen maps it or runs its constructors.
+  Result<int> file_abi = read_plugin_abi_version(file);
+  if (!file_abi) return plugin_error(shown, file_abi.error().message);
+  if (*file_abi != kPluginAbiVersion) return abi_mismatch(shown, *file_abi);
   gl::DynamicLibrary library({file.c_str()});
   if (!library.loaded()) {
     // An unresolved symbol here usually means a plugin built against another libpenumbra
@@ -38,11 +49,7 @@ Result<PluginLibrary> PluginLibrary::open(const fs::path& file, const fs::path& 
     return plugin_error(shown, std::string("not a Penumbra plugin: it does not export ") + kPluginAbiVersionSymbol +
                                    " and " + kPluginRegisterSymbol +
                                    " (add PENUMBRA_PLUGIN(register_fn) from plugin/plugin_api.h)");
-  const int version = version_fn();
-  if (version != kPluginAbiVersion)
-    return plugin_error(shown, "plugin ABI version " + std::to_string(version) + ", this Penumbra's is " +
-                                   std::to_string(kPluginAbiVersion) +
-                                   ": rebuild the plugin against this Penumbra");
+  if (const int version = version_fn(); version != kPluginAbiVersion) return abi_mismatch(shown, version);
   return PluginLibrary(std::move(library), shown, register_fn);
 }
 
@@ -50,7 +57,7 @@ void PluginLibrary::register_into(technique::TechniqueRegistry& registry) const 
 
 Result<std::vector<fs::path>> scan_plugin_directory(const std::string& dir) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return plugin_error(dir, "plugin directory does not exist");
+  if (Status s = check_directory(dir); !s) return plugin_error(dir, "plugin " + s.error().message);
   gl::ShaderFileSystem::default_instance().add_root(fs::absolute(dir, ec).lexically_normal());
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir, ec))

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <functional>
@@ -14,12 +16,29 @@
 
 #include "scene/framing.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_spec_checks.h"
+#include "util/file_read.h"
+#include "util/json_text.h"
 
 namespace penumbra::scene {
 namespace {
 
 // Extensions a file may list as required: the ones whose meaning the loader implements.
 constexpr const char* kSupportedRequiredExtensions[] = {"KHR_lights_punctual"};
+
+// tinygltf takes a 32-bit size; 1 GiB is far above any model we have met (the largest real
+// asset we test, 216k triangles with textures, is under 20 MB).
+constexpr std::size_t kMaxGltfFileBytes = std::size_t{1} << 30;
+
+// A .glb holds its JSON in the first chunk (glTF 2.0, 4.4.3); a malformed header gives no JSON
+// here and tinygltf's own error later.
+std::string_view gltf_json_part(std::string_view bytes, bool binary) {
+  if (!binary) return bytes;
+  if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF" || bytes.substr(16, 4) != "JSON") return {};
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return bytes.substr(20, length);
+}
 
 Error file_error(const std::string& file, std::string message, std::string where = {}) {
   Error e = make_error(std::move(message));
@@ -218,17 +237,33 @@ glm::mat4 local_transform(const tinygltf::Node& node) {
 
 Result<Scene> load_gltf(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    return file_error(path, "file not found (expected a .gltf or .glb file)");
+  if (!std::filesystem::exists(path, ec)) return file_error(path, "file not found (expected a .gltf or .glb file)");
+
+  const bool binary = std::filesystem::path(path).extension() == ".glb";
+  Result<std::string> bytes = read_file_whole(path, kMaxGltfFileBytes);
+  if (!bytes) return bytes.error();
+  // The JSON part goes through the one nesting limit before tinygltf's parser (which recurses)
+  // sees it; duplicate keys are left to the parser: a glTF file is not ours to be strict about.
+  if (std::optional<JsonTextProblem> p = scan_json_text(gltf_json_part(*bytes, binary), /*duplicate_keys=*/false)) {
+    Error e = file_error(path, "glTF JSON: " + p->message);
+    if (!binary) {
+      e.line = p->line;
+      e.column = p->column;
+    }
+    return e;
+  }
+  if (Status s = check_gltf_spec_values(gltf_json_part(*bytes, binary), path); !s) return s.error();
 
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
   std::string err, warn;
-  const bool binary = std::filesystem::path(path).extension() == ".glb";
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
   bool ok = false;
   try {
-    ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    const auto size = static_cast<unsigned int>(bytes->size());
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                              reinterpret_cast<const unsigned char*>(bytes->data()), size, base_dir)
+                : loader.LoadASCIIFromString(&model, &err, &warn, bytes->data(), size, base_dir);
   } catch (const std::exception& e) {
     // tinygltf indexes some arrays unchecked with .at(): a malformed file throws instead of
     // returning its error (found by fuzz_gltf).

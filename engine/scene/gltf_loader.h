@@ -6,7 +6,9 @@
 // Not supported (rejected with an Error): other primitive modes, sparse accessors, any required
 // extension but KHR_lights_punctual (KHR_draco_mesh_compression, ...), non-finite positions or
 // transforms, node hierarchies that expand past the limits below. A missing buffer or image
-// file is an Error naming it.
+// file is an Error naming it. Before tinygltf sees the file: it is read whole (devices refused,
+// 1 GiB at most), its JSON (a .glb's JSON chunk) goes through the one nesting limit
+// (util/json_text.h) and the specification's value ranges (scene/gltf_spec_checks.h).
 // KHR_lights_punctual: every directional, spot and point light a node of the default scene
 // places becomes a SceneLight (Scene::lights) with the node's world position and direction
 // (glTF lights shine down the node's local -Z), colour, intensity (copied as is: lux for

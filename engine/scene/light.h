@@ -36,6 +36,11 @@ enum class LightType { directional, spot, point };
 // "directional", "spot", "point".
 const char* light_type_name(LightType type);
 
+// A spot's cone half-angle, degrees: 0 lights nothing, 90 and more is no cone a perspective
+// shadow map can hold (light_view_projection's fov is twice the half-angle).
+inline constexpr float kMinSpotAngleDegrees = 1.0f;
+inline constexpr float kMaxSpotAngleDegrees = 89.0f;
+
 struct Light {
   LightType type = LightType::directional;
   glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit, pointing from the light into the scene

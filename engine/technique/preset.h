@@ -1,9 +1,6 @@
 #pragma once
-// Parameter presets: a technique's parameter values saved as JSON,
-//   {"technique": "pcss", "parameters": {"samples": 32, "use_blur": false}}
-// Loading is all-or-nothing: a preset written for another technique, or naming a parameter the
-// technique does not have, or holding a value out of range, is rejected and changes nothing.
-// GL-free (unit-tested without a window). Shipped presets live beside a technique's graph:
+// Parameter presets of a technique: the JSON format and applying one (graph/parameter_preset.h,
+// GL-free and fuzzed), and where a technique's shipped presets live: beside its graph,
 // techniques/baseline/pcss.json -> techniques/baseline/presets/pcss.<preset>.json (`paper`: the
 // paper's constants).
 //
@@ -13,25 +10,17 @@
 #include <string>
 #include <vector>
 
-#include "graph/parameters.h"
+#include "graph/parameter_preset.h"
 #include "util/error.h"
 
 namespace penumbra::technique {
 
 struct Technique;
 
-struct Preset {
-  std::string technique;
-  std::string parameters_json;  // the "parameters" object, as JSON text
-};
-
-std::string format_preset(const std::string& technique, const graph::ParameterSet& params);
-// Checks the shape only; `source` names the file in errors.
-Result<Preset> parse_preset(const std::string& text, const std::string& source);
-// The parameter set with the preset applied; an error (and no change) when the preset is for
-// another technique or any key/value does not fit.
-Result<graph::ParameterSet> preset_applied(const Preset& preset, const std::string& technique,
-                                           const graph::ParameterSet& current);
+using graph::format_preset;
+using graph::parse_preset;
+using graph::Preset;
+using graph::preset_applied;
 
 // Names of the presets shipped with a technique (embedded at build time, or files beside a
 // plugin's graph), sorted.
@@ -40,5 +29,7 @@ std::vector<std::string> shipped_presets(const Technique& technique);
 // binaries), or a preset file when `name` is a path (contains '/' or ends in .json). The error
 // lists the shipped presets when none matches.
 Result<Preset> load_preset(const Technique& technique, const std::string& name);
+// Whether load_preset reads `name` as a file path rather than a shipped preset's name.
+bool is_preset_path(const std::string& name);
 
 }  // namespace penumbra::technique

@@ -16,4 +16,8 @@ inline constexpr std::size_t kMaxInputFileBytes = 16u << 20;
 
 Result<std::string> read_file_whole(const std::string& path, std::size_t max_bytes = kMaxInputFileBytes);
 
+// A folder the user named (plugins, outputs): "does not exist" or "is not a directory" (a file
+// given where a folder belongs), with the path as the error's file.
+Status check_directory(const std::string& path);
+
 }  // namespace penumbra

@@ -17,7 +17,25 @@ Status move_into_place(const std::string& tmp, const std::string& path) {
   return {};
 }
 
+Status check_output_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  auto fail = [&](std::string message) {
+    Error e = make_error(std::move(message));
+    e.file = path;
+    return e;
+  };
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) return fail("is a directory, not a file");
+  const fs::path parent = fs::path(path).parent_path();
+  if (parent.empty()) return {};
+  const fs::file_status st = fs::status(parent, ec);
+  if (!fs::exists(st)) return fail("its folder " + shortened(parent.string(), 200) + " does not exist");
+  if (!fs::is_directory(st)) return fail(shortened(parent.string(), 200) + " is not a directory");
+  return {};
+}
+
 Status write_file_whole(const std::string& path, const std::string& text) {
+  if (Status s = check_output_path(path); !s) return s;
   const std::string tmp = path + ".partial";
   {
     std::ofstream f(tmp, std::ios::binary);

@@ -9,6 +9,10 @@ namespace penumbra {
 
 Status write_file_whole(const std::string& path, const std::string& text);
 
+// Whether `path` can be an output file, in words that say what is wrong: "is a directory, not a
+// file", "its folder DIR does not exist", "DIR is not a directory". Every writer calls it first.
+Status check_output_path(const std::string& path);
+
 // Renames a finished temporary file over `path`; on failure removes it. (PNG writers produce
 // the temporary themselves.)
 Status move_into_place(const std::string& tmp, const std::string& path);

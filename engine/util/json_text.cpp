@@ -26,7 +26,7 @@ struct Frame {
 
 class Scanner {
  public:
-  Scanner(std::string_view text, int max_depth) : text_(text), max_depth_(max_depth) {}
+  Scanner(std::string_view text, bool duplicate_keys) : text_(text), duplicate_keys_(duplicate_keys) {}
 
   std::optional<JsonTextProblem> run() {
     while (pos_ < text_.size()) {
@@ -34,8 +34,8 @@ class Scanner {
       if (c == '"') {
         if (auto p = string_token()) return p;
       } else if (c == '{' || c == '[') {
-        if (static_cast<int>(stack_.size()) >= max_depth_)
-          return problem(pos_, "nesting deeper than " + std::to_string(max_depth_) + " levels");
+        if (static_cast<int>(stack_.size()) >= kMaxJsonDepth)
+          return problem(pos_, "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
         stack_.push_back(Frame{c == '{', {}});
         ++pos_;
       } else if (c == '}' || c == ']') {
@@ -66,7 +66,7 @@ class Scanner {
     size_t next = pos_;
     while (next < text_.size() && is_space(text_[next])) ++next;
     bool is_key = next < text_.size() && text_[next] == ':' && !stack_.empty() && stack_.back().object;
-    if (!is_key) return std::nullopt;
+    if (!is_key || !duplicate_keys_) return std::nullopt;
     std::string_view key = text_.substr(start + 1, end - start - 1);
     auto [it, inserted] = stack_.back().keys.emplace(key, start);
     if (inserted) return std::nullopt;
@@ -95,15 +95,15 @@ class Scanner {
   }
 
   std::string_view text_;
-  int max_depth_;
+  bool duplicate_keys_;
   size_t pos_ = 0;
   std::vector<Frame> stack_;
 };
 
 }  // namespace
 
-std::optional<JsonTextProblem> scan_json_text(std::string_view text, int max_depth) {
-  return Scanner(text, max_depth).run();
+std::optional<JsonTextProblem> scan_json_text(std::string_view text, bool duplicate_keys) {
+  return Scanner(text, duplicate_keys).run();
 }
 
 void byte_offset_to_line_col(std::string_view text, size_t offset, int& line, int& column) {

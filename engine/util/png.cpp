@@ -10,6 +10,21 @@
 
 namespace penumbra {
 
+Status write_png(const std::string& path, int width, int height, int channels, const unsigned char* data) {
+  if (Status s = check_output_path(path); !s) return s;
+  // Write to a temporary name and rename, so a reader never sees a half-written PNG.
+  std::string tmp = path + ".partial";
+  if (width <= 0 || height <= 0 || !stbi_write_png(tmp.c_str(), width, height, channels, data, width * channels)) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    Error e = make_error("cannot write PNG (" + std::to_string(width) + "x" + std::to_string(height) +
+                         "): directory not writable or disk full");
+    e.file = path;
+    return e;
+  }
+  return move_into_place(tmp, path);
+}
+
 Status write_png_rgba8(const std::string& path, int width, int height,
                        const std::vector<unsigned char>& rgba) {
   if (width <= 0 || height <= 0 || rgba.size() < static_cast<size_t>(width) * height * 4) {
@@ -17,16 +32,7 @@ Status write_png_rgba8(const std::string& path, int width, int height,
     e.file = path;
     return e;
   }
-  // Write to a temporary name and rename, so a reader never sees a half-written PNG.
-  std::string tmp = path + ".partial";
-  if (!stbi_write_png(tmp.c_str(), width, height, 4, rgba.data(), width * 4)) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    Error e = make_error("cannot write PNG (does the directory exist and is it writable?)");
-    e.file = path;
-    return e;
-  }
-  return move_into_place(tmp, path);
+  return write_png(path, width, height, 4, rgba.data());
 }
 
 Status write_png_grey(const std::string& path, int width, int height, const std::vector<float>& values,

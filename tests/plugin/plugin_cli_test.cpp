@@ -135,5 +135,18 @@ TEST(PluginCli, EveryCommandRefusesAnotherAbiVersion) {
   }
 }
 
+// A half-copied plugin (the template's .so cut in half) is exit 2 naming it, never SIGBUS.
+TEST(PluginCli, ATruncatedPluginIsRefusedByName) {
+  const fs::path dir = fresh_temp_dir("plugin_cli_truncated");
+  fs::copy(kTemplateDir, dir, fs::copy_options::recursive);
+  const fs::path so = dir / "template.so";
+  fs::resize_file(so, fs::file_size(so) / 2);
+  CommandRun r = cli("techniques --plugin-dir " + dir.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_TRUE(contains(r.output, so.string())) << r.output;
+  EXPECT_TRUE(contains(r.output, "truncated or damaged")) << r.output;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace penumbra::test

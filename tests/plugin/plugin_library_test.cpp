@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "gl/shader_files.h"
+#include "plugin/plugin_file_check.h"
 #include "plugin/plugin_library.h"
 #include "techniques/builtin_techniques.h"
 #include "test_support/technique_rig.h"
@@ -85,6 +86,37 @@ TEST(PluginLibrary, AFileThatIsNoLibraryIsRefused) {
   ASSERT_FALSE(loaded);
   EXPECT_EQ(loaded.error().file, (dir / "text.so").string());
   EXPECT_TRUE(contains(loaded.error().message, "cannot load plugin")) << loaded.error().message;
+  fs::remove_all(dir);
+}
+
+// PENUMBRA_PLUGIN's section is what the host reads before dlopen.
+TEST(PluginFile, TheAbiVersionIsReadFromTheFileWithoutLoadingIt) {
+  Result<int> abi = plugin::read_plugin_abi_version(plugin_file("template", "template"));
+  ASSERT_TRUE(abi) << abi.error().to_string();
+  EXPECT_EQ(*abi, plugin::kPluginAbiVersion);
+  // wrong_abi's static constructor aborts: reading its version must not run it.
+  Result<int> wrong = plugin::read_plugin_abi_version(plugin_file("wrong_abi", "wrong_abi"));
+  ASSERT_TRUE(wrong) << wrong.error().to_string();
+  EXPECT_EQ(*wrong, plugin::kPluginAbiVersion + 1);
+}
+
+// A half-written .so would be mapped past its end and fault (SIGBUS) on first touch: each cut
+// is refused by name before dlopen, whichever part of the file it removed.
+TEST(PluginFile, ATruncatedLibraryIsRefusedBeforeItIsMapped) {
+  const fs::path dir = fresh_temp_dir("plugin_truncated");
+  const fs::path whole = plugin_file("template", "template");
+  const auto size = fs::file_size(whole);
+  for (const auto keep : {size - 1, size - 200, size / 2, size / 10, decltype(size){100}}) {
+    SCOPED_TRACE("kept " + std::to_string(keep) + " of " + std::to_string(size) + " bytes");
+    const fs::path cut = dir / "template.so";
+    fs::copy_file(whole, cut, fs::copy_options::overwrite_existing);
+    fs::resize_file(cut, keep);
+    Result<plugin::PluginLibrary> lib = plugin::PluginLibrary::open(cut);
+    ASSERT_FALSE(lib);
+    EXPECT_EQ(lib.error().file, cut.string());
+    EXPECT_EQ(lib.error().exit_code(), 2);
+    EXPECT_TRUE(contains(lib.error().message, "truncated or damaged")) << lib.error().message;
+  }
   fs::remove_all(dir);
 }
 

@@ -5,10 +5,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <functional>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -109,6 +113,52 @@ TEST(EvalCli, ReferenceIsCachedByFrameAndSettings) {
   EXPECT_EQ(other_light.err.find("read from the cache"), std::string::npos) << other_light.err;
   EvalRun forced = eval_with_cache("--no-cache", d / "e.json");
   EXPECT_EQ(forced.err.find("read from the cache"), std::string::npos) << forced.err;
+}
+
+// A damaged cache entry (a NaN pixel, a truncated file) is never used: eval warns naming the
+// file, renders the reference again, gives the numbers of a fresh run and replaces the entry.
+TEST(EvalCli, ADamagedReferenceCacheIsRenderedAgainAndReplaced) {
+  const fs::path d = out_dir();
+  const std::string cache = "PENUMBRA_CACHE_DIR=" + (d / "cache").string() + " ";
+  const std::string args = "--scene ball --techniques pcss --size 64x48 --rays 16 --frames 1";
+  EvalRun fresh = run_eval(args + " --json " + (d / "fresh.json").string(), cache);
+  ASSERT_EQ(fresh.code, 0) << fresh.err;
+  fs::path entry;
+  for (const auto& f : fs::directory_iterator(d / "cache" / "reference")) entry = f.path();
+  ASSERT_FALSE(entry.empty());
+  const auto whole_size = fs::file_size(entry);
+  std::uint32_t key_size = 0;
+  {
+    std::ifstream in(entry, std::ios::binary);
+    in.seekg(8);
+    in.read(reinterpret_cast<char*>(&key_size), 4);
+  }
+  const auto first_pixel = static_cast<std::streamoff>(8 + 4 + key_size + 8);
+  const std::vector<std::pair<std::string, std::function<void()>>> damages = {
+      {"is not a visibility in [0, 1]",
+       [&] {
+         std::fstream f(entry, std::ios::binary | std::ios::in | std::ios::out);
+         f.seekp(first_pixel + 4 * 10);
+         const float nan = std::numeric_limits<float>::quiet_NaN();
+         f.write(reinterpret_cast<const char*>(&nan), 4);
+       }},
+      {"truncated or damaged", [&] { fs::resize_file(entry, whole_size - 100); }},
+  };
+  const nlohmann::json want = nlohmann::json::parse(std::ifstream(d / "fresh.json"));
+  for (const auto& [message, damage] : damages) {
+    damage();
+    EvalRun r = run_eval(args + " --json " + (d / "again.json").string(), cache);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find(entry.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("read from the cache"), std::string::npos) << r.err;
+    const nlohmann::json got = nlohmann::json::parse(std::ifstream(d / "again.json"));
+    EXPECT_EQ(got["rows"][0]["rmse"], want["rows"][0]["rmse"]);
+    EXPECT_FALSE(got["rows"][0]["rmse"].is_null());
+    EXPECT_EQ(fs::file_size(entry), whole_size);  // replaced by the new one
+    EvalRun cached = run_eval(args + " --json " + (d / "cached.json").string(), cache);
+    EXPECT_NE(cached.err.find("read from the cache"), std::string::npos) << cached.err;
+  }
 }
 
 // Items of --techniques carry settings of their own; rows are labelled by them.

@@ -1,4 +1,7 @@
 // The loader on glTF files the test writes itself with tinygltf (no external assets).
+#include <unistd.h>
+
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -163,6 +166,35 @@ TEST(GltfLoader, AlphaMaskedTexturedQuadAsGlb) {
 TEST(GltfLoader, RejectsMissingFile) {
   const std::string msg = error_of("/nonexistent/dir/model.gltf");
   EXPECT_NE(msg.find("not found"), std::string::npos) << msg;
+}
+
+// A .gltf name that leads to a device that never ends (here a link to /dev/zero) is refused
+// before a byte is read, not read until memory runs out.
+TEST(GltfLoader, RejectsADeviceBehindAGltfName) {
+  const fs::path link = fs::temp_directory_path() / ("penumbra_zero_" + std::to_string(::getpid()) + ".gltf");
+  fs::remove(link);
+  fs::create_symlink("/dev/zero", link);
+  const std::string msg = error_of(link.string());
+  EXPECT_NE(msg.find("is a character device, not a regular file"), std::string::npos) << msg;
+  fs::remove(link);
+}
+
+// A .glb whose JSON chunk nests past the one limit is refused before tinygltf's parser recurses.
+TEST(GltfLoader, RejectsDeepNestingInAGlbsJsonChunk) {
+  std::string json = "{\"asset\": {\"version\": \"2.0\", \"extras\": " + std::string(5000, '[') +
+                     std::string(5000, ']') + "}}";
+  while (json.size() % 4) json += ' ';
+  std::string glb = "glTF";
+  auto put32 = [&](uint32_t v) { glb.append(reinterpret_cast<const char*>(&v), 4); };
+  put32(2);
+  put32(static_cast<uint32_t>(12 + 8 + json.size()));
+  put32(static_cast<uint32_t>(json.size()));
+  glb += "JSON" + json;
+  const fs::path path = fs::temp_directory_path() / ("penumbra_deep_" + std::to_string(::getpid()) + ".glb");
+  std::ofstream(path, std::ios::binary) << glb;
+  const std::string msg = error_of(path.string());
+  EXPECT_NE(msg.find("nesting deeper than 64"), std::string::npos) << msg;
+  fs::remove(path);
 }
 
 TEST(GltfLoader, RejectsTruncatedGlb) {

@@ -1,0 +1,85 @@
+// OutputBatch: outputs appear together on commit, and a batch given up leaves nothing behind,
+// neither its temporaries nor the folders it created, and never touches what was there before.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "test_support/temp_dir.h"
+#include "util/file_write.h"
+#include "util/output_batch.h"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+size_t entries(const fs::path& dir) {
+  return static_cast<size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
+}
+
+TEST(OutputBatch, NothingAppearsBeforeCommitAndEverythingAfter) {
+  const fs::path dir = test::fresh_temp_dir("batch_commit");
+  OutputBatch batch;
+  ASSERT_TRUE(batch.create_directory((dir / "maps" / "deep").string()));
+  for (const fs::path& p : {dir / "maps" / "deep" / "a.txt", dir / "report.json"}) {
+    Result<std::string> tmp = batch.staged(p.string());
+    ASSERT_TRUE(tmp);
+    ASSERT_TRUE(write_file_whole(*tmp, p.filename().string()));
+    EXPECT_FALSE(fs::exists(p));
+  }
+  ASSERT_TRUE(batch.commit());
+  EXPECT_EQ(read(dir / "maps" / "deep" / "a.txt"), "a.txt");
+  EXPECT_EQ(read(dir / "report.json"), "report.json");
+  EXPECT_EQ(entries(dir / "maps" / "deep"), 1u);  // no temporary left
+  EXPECT_EQ(entries(dir), 2u);
+  fs::remove_all(dir);
+}
+
+TEST(OutputBatch, ABatchGivenUpLeavesNothingItMadeAndKeepsWhatWasThere) {
+  const fs::path dir = test::fresh_temp_dir("batch_discard");
+  std::ofstream(dir / "old.json") << "the user's";
+  fs::create_directories(dir / "mine");
+  std::ofstream(dir / "mine" / "keep.txt") << "keep";
+  {
+    OutputBatch batch;
+    ASSERT_TRUE(batch.create_directory((dir / "new" / "deeper").string()));
+    ASSERT_TRUE(batch.create_directory((dir / "mine").string()));
+    for (const fs::path& p : {dir / "new" / "deeper" / "a.png", dir / "mine" / "b.png", dir / "old.json"}) {
+      Result<std::string> tmp = batch.staged(p.string());
+      ASSERT_TRUE(tmp);
+      ASSERT_TRUE(write_file_whole(*tmp, "new"));
+    }
+    // A later output into a place that cannot hold it: the command gives the batch up.
+    Result<std::string> bad = batch.staged(dir.string());
+    ASSERT_FALSE(bad);
+    const Error e = batch.not_written(bad.error());
+    EXPECT_NE(e.message.find("none of the outputs was written"), std::string::npos) << e.message;
+    EXPECT_NE(e.message.find("a.png"), std::string::npos) << e.message;
+  }
+  EXPECT_FALSE(fs::exists(dir / "new"));
+  EXPECT_EQ(read(dir / "old.json"), "the user's");
+  EXPECT_EQ(entries(dir / "mine"), 1u);
+  EXPECT_EQ(entries(dir), 2u);
+  fs::remove_all(dir);
+}
+
+TEST(OutputBatch, AFileWhereTheFolderBelongsIsNamed) {
+  const fs::path dir = test::fresh_temp_dir("batch_file_as_dir");
+  std::ofstream(dir / "maps") << "x";
+  OutputBatch batch;
+  Status s = batch.create_directory((dir / "maps").string());
+  ASSERT_FALSE(s);
+  EXPECT_EQ(s.error().message, "is not a directory");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace penumbra
