@@ -180,7 +180,7 @@ int run(const std::vector<std::string>& args) {
   graph::ParameterSet params(desc->parameters);
   for (const auto& s : sets) {
     if (Status st = params.set_from_string(s); !st) {
-      std::cerr << file << ": --set " << s << ": " << st.error().message << "\n";
+      std::cerr << file << ": --set " << shortened(s) << ": " << st.error().message << "\n";
       return 2;
     }
   }

@@ -139,7 +139,7 @@ int cmd_render(const std::vector<std::string>& argv) {
       if (Status s = session.set_param(kv); !s) {
         if (all) continue;  // a key of another technique
         Error e = s.error();
-        e.where = "--set " + kv;
+        e.where = "--set " + shortened(kv);
         return fail(e);
       }
     std::fprintf(stderr, "rendering %s on %s at %dx%d (shadow map %d)...\n", t.c_str(),

@@ -85,7 +85,7 @@ Status check_set_keys(const technique::TechniqueRegistry& registry, const std::v
     const size_t eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) {
       Error e = make_error("expected k=v");
-      e.where = "--set " + kv;
+      e.where = "--set " + shortened(kv);
       return e;
     }
     const std::string key = kv.substr(0, eq);
@@ -95,7 +95,7 @@ Status check_set_keys(const technique::TechniqueRegistry& registry, const std::v
       known = true;
       if (Status s = p.set_from_string(kv); !s) {
         Error e = s.error();
-        e.where = "--set " + kv;
+        e.where = "--set " + shortened(kv);
         return e;
       }
     }
@@ -103,7 +103,7 @@ Status check_set_keys(const technique::TechniqueRegistry& registry, const std::v
       std::string list;
       for (const std::string& t : techniques) list += (list.empty() ? "" : ", ") + t;
       Error e = make_error("no technique among " + list + " has a parameter '" + shortened(key) + "'");
-      e.where = "--set " + kv;
+      e.where = "--set " + shortened(kv);
       return e;
     }
   }
@@ -115,7 +115,7 @@ Status apply_matching_sets(technique::TechniqueSession& session, const std::vect
     if (!session.params().find(kv.substr(0, kv.find('=')))) continue;
     if (Status s = session.set_param(kv); !s) {
       Error e = s.error();
-      e.where = "--set " + kv;
+      e.where = "--set " + shortened(kv);
       return e;
     }
   }

@@ -123,8 +123,7 @@ int nearest_step_value(const ParamDesc& desc, int value) {
 Result<ParamValue> parse_param_value(const ParamDesc& desc, std::string_view text) {
   std::string s(text);
   auto bad = [&](const char* expected) {
-    Error e = make_error("parameter '" + desc.name + "' expects " + expected + ", got '" + s +
-                         "'");
+    Error e = make_error("parameter '" + desc.name + "' expects " + expected + ", got '" + shortened(s) + "'");
     e.where = desc.name;
     return e;
   };
@@ -140,7 +139,7 @@ Result<ParamValue> parse_param_value(const ParamDesc& desc, std::string_view tex
       long long v = std::strtoll(s.c_str(), &end, 10);
       if (*end != '\0') return bad("int");
       if (errno == ERANGE || v < INT32_MIN || v > INT32_MAX) {
-        Error e = make_error("parameter '" + desc.name + "' = " + s + " is out of range " +
+        Error e = make_error("parameter '" + desc.name + "' = " + shortened(s) + " is out of range " +
                              (desc.has_range() ? range_text(desc) : "of int"));
         e.where = desc.name;
         return e;
@@ -224,7 +223,7 @@ Status ParameterSet::set(std::string_view name, ParamValue value) {
 Status ParameterSet::set_from_string(std::string_view assignment) {
   size_t eq = assignment.find('=');
   if (eq == std::string_view::npos || eq == 0) {
-    Error e = make_error("expected k=v, got '" + std::string(assignment) + "'");
+    Error e = make_error("expected k=v, got '" + shortened(assignment) + "'");
     return e;
   }
   std::string_view key = assignment.substr(0, eq);

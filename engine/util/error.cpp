@@ -4,13 +4,16 @@ namespace penumbra {
 
 std::string Error::to_string() const {
   std::string out;
+  // The file and the place are often the user's words echoed: each stays short enough for one
+  // line (a path keeps its end, where the file's name is).
+  constexpr size_t kMaxEchoed = 200;
   if (!file.empty()) {
-    out += file;
+    out += file.size() > kMaxEchoed ? "..." + file.substr(file.size() - (kMaxEchoed - 3)) : file;
     if (line > 0) out += ":" + std::to_string(line);
     if (line > 0 && column > 0) out += ":" + std::to_string(column);
     out += ": ";
   }
-  if (!where.empty()) out += where + ": ";
+  if (!where.empty()) out += shortened(where, kMaxEchoed) + ": ";
   out += message;
   return out;
 }
