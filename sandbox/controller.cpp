@@ -429,11 +429,15 @@ Status SandboxController::start_sequence(const SequenceSpec& spec) {
   return note({});
 }
 
-void SandboxController::stop_sequence() {
+void SandboxController::stop_sequence() { end_sequence(/*keep_frames=*/true); }
+
+void SandboxController::end_sequence(bool keep_frames) {
   if (!recording_) return;
   camera() = recording_->camera;
   light() = recording_->light;
-  recording_.reset();
+  Status kept = keep_frames ? recording_->frames->commit() : Status();
+  recording_.reset();  // a batch not committed removes its frames
+  if (!kept) note(kept);
 }
 
 void SandboxController::pose_for_sequence() {
@@ -446,13 +450,20 @@ void SandboxController::pose_for_sequence() {
 Status SandboxController::save_sequence_frame() {
   Recording& r = *recording_;
   const std::string path = sequence_frame_path(r.spec, r.next);
-  if (Status s = save_presentation_png(path); !s) {
-    stop_sequence();
-    return s;
+  Result<std::string> staged = r.frames->staged(path);
+  Status saved = staged ? save_presentation_png(*staged) : Status(staged.error());
+  if (!saved) {
+    Error e = saved.error();
+    e.file = path;
+    e = r.frames->not_written(e);
+    end_sequence(/*keep_frames=*/false);
+    return e;
   }
   if (++r.next == r.spec.frames) {
     const std::string done = "recorded " + std::to_string(r.spec.frames) + " frames into " + r.spec.dir;
-    stop_sequence();
+    Status committed = r.frames->commit();
+    end_sequence(/*keep_frames=*/false);
+    if (!committed) return committed;
     message_.clear();
     sequence_note_ = done;
   }

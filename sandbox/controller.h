@@ -33,6 +33,7 @@
 #include "technique/technique.h"
 #include "technique/technique_session.h"
 #include "scene/staging.h"
+#include "util/output_batch.h"
 
 namespace penumbra::sandbox {
 
@@ -149,7 +150,10 @@ class SandboxController {
   // sequence and saves the composed frame to sequence_frame_path(spec, i); after the last one
   // the pose the sequence started from is back. An error (and nothing recorded) for a bad spec.
   Status start_sequence(const SequenceSpec& spec);
-  void stop_sequence();  // restores the starting pose
+  // Restores the starting pose; the frames saved so far are kept (a deliberate stop). A frame
+  // that cannot be saved stops the sequence and keeps none of it: the frames appear together,
+  // when the last is saved (util/output_batch.h).
+  void stop_sequence();
   bool recording() const { return recording_.has_value(); }
   int sequence_saved() const { return recording_ ? recording_->next : 0; }
   int sequence_frames() const { return recording_ ? recording_->spec.frames : 0; }
@@ -205,7 +209,9 @@ class SandboxController {
     scene::Camera camera;  // the starting pose
     scene::Light light;
     glm::vec3 centre{0.0f};
+    std::unique_ptr<OutputBatch> frames = std::make_unique<OutputBatch>();
   };
+  void end_sequence(bool keep_frames);
   std::optional<Recording> recording_;
   bool light_frozen_ = false;
   std::string sequence_note_;  // "recorded N frames into DIR" after the last one

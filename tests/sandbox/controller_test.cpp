@@ -114,6 +114,36 @@ TEST_F(Fixture, RecordedOrbitSavesNumberedFramesAndRestoresThePose) {
   std::filesystem::remove_all(dir);
 }
 
+// A frame that cannot be saved (a folder sits where frame 2 goes) stops the sequence, names the
+// frame and keeps none: frames 0 and 1 do not stay behind as half a sequence. A deliberate stop
+// keeps the frames saved so far.
+TEST_F(Fixture, AFailedSequenceFrameKeepsNoneAndAStopKeepsWhatWasSaved) {
+  const std::filesystem::path dir = test::fresh_temp_dir("sequence_failed");
+  std::filesystem::create_directories(dir / "frame_0002.png");
+  ASSERT_TRUE(controller->start_sequence({.frames = 4, .dir = dir.string()}));
+  ASSERT_TRUE(controller->render_frame());
+  ASSERT_TRUE(controller->render_frame());
+  Status third = controller->render_frame();
+  ASSERT_FALSE(third);
+  EXPECT_EQ(third.error().file, (dir / "frame_0002.png").string());
+  EXPECT_NE(third.error().message.find("none of the outputs was written"), std::string::npos) << third.error().message;
+  EXPECT_FALSE(controller->recording());
+  const auto entries = [&] {
+    return std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator());
+  };
+  EXPECT_EQ(entries(), 1) << "only the folder that was there";
+
+  std::filesystem::remove_all(dir / "frame_0002.png");
+  ASSERT_TRUE(controller->start_sequence({.frames = 4, .dir = dir.string()}));
+  ASSERT_TRUE(controller->render_frame());
+  ASSERT_TRUE(controller->render_frame());
+  controller->stop_sequence();
+  EXPECT_TRUE(std::filesystem::exists(dir / "frame_0000.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "frame_0001.png"));
+  EXPECT_EQ(entries(), 2);
+  std::filesystem::remove_all(dir);
+}
+
 // Three-way compare: A | B | reference; A and B are each measured against the third session, so
 // a B equal to A has A's statistics exactly, and off frees the third session.
 TEST_F(Fixture, ThreeWayCompareMeasuresAAndBAgainstTheReference) {
