@@ -156,7 +156,7 @@ int run(const std::vector<std::string>& args) {
   }
   if (pass_types) return print_pass_types(library->declarations());
   if (file.empty()) return usage_error("missing FILE.json");
-  if (Status st = check_assignment_keys("--set", sets); !st) return usage_error(st.error().to_string());
+  if (Status st = graph::check_assignment_keys("--set", sets); !st) return usage_error(st.error().to_string());
   if (frame && no_frame) return usage_error("--frame and --no-frame exclude each other");
 
   graph::Checked<graph::GraphDesc> desc = graph::load_graph_json(file);

@@ -54,6 +54,8 @@ Result<std::vector<TechniqueSpec>> parse_technique_specs(const std::string& opti
       params = std::move(*applied);
       spec.preset_json = preset->parameters_json;
     }
+    if (Status s = graph::check_assignment_keys("--" + option + " item '" + shortened(item) + "'", spec.sets); !s)
+      return s.error();
     for (const std::string& kv : spec.sets)
       if (Status s = params.set_from_string(kv); !s)
         return make_error("--" + option + " item '" + shortened(item) + "': " + s.error().message);

@@ -437,7 +437,7 @@ void SandboxController::end_sequence(bool keep_frames) {
   light() = recording_->light;
   Status kept = keep_frames ? recording_->frames->commit() : Status();
   recording_.reset();  // a batch not committed removes its frames
-  if (!kept) note(kept);
+  if (!kept) (void)note(kept);
 }
 
 void SandboxController::pose_for_sequence() {

@@ -1,5 +1,7 @@
 #include "cli/options/args.h"
 
+#include "graph/parameters.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -55,23 +57,10 @@ Result<ParsedArgs> parse_args(const std::vector<std::string>& args, const std::v
   }
   for (const OptionSpec& spec : specs)
     if (spec.repeated && spec.value_name == kAssignmentValueName && out.has(spec.name))
-      if (Status s = check_assignment_keys("--" + spec.name, out.all(spec.name)); !s) return s.error();
+      if (Status s = graph::check_assignment_keys("--" + spec.name, out.all(spec.name)); !s) return s.error();
   return out;
 }
 
-Status check_assignment_keys(const std::string& option, const std::vector<std::string>& assignments) {
-  std::map<std::string, std::string> seen;
-  for (const std::string& kv : assignments) {
-    const std::string key = kv.substr(0, kv.find('='));
-    if (auto [it, inserted] = seen.emplace(key, kv); !inserted) {
-      Error e = make_error("'" + shortened(key) + "' is given twice (" + shortened(it->second) + ", then " +
-                           shortened(kv) + "); give each key once");
-      e.where = option + " " + shortened(kv);
-      return e;
-    }
-  }
-  return {};
-}
 
 std::string format_help(const std::string& usage, const std::string& description,
                         const std::vector<OptionSpec>& specs) {

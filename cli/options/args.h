@@ -31,8 +31,7 @@ struct ParsedArgs {
 };
 
 Result<ParsedArgs> parse_args(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs);
-// "--set a=1 --set a=2": an error naming the option and the key; for parsers of their own.
-Status check_assignment_keys(const std::string& option, const std::vector<std::string>& assignments);
+
 std::string format_help(const std::string& usage, const std::string& description,
                         const std::vector<OptionSpec>& specs);
 // --help or -h anywhere on the line (before any parsing, so a bad option does not hide help).

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 namespace penumbra::graph {
@@ -282,6 +283,20 @@ ParamDesc enum_param(std::string name, std::string def, std::vector<std::string>
   d.options = std::move(options);
   d.description = std::move(description);
   return d;
+}
+
+Status check_assignment_keys(const std::string& option, const std::vector<std::string>& assignments) {
+  std::map<std::string, std::string> seen;
+  for (const std::string& kv : assignments) {
+    const std::string key = kv.substr(0, kv.find('='));
+    if (auto [it, inserted] = seen.emplace(key, kv); !inserted) {
+      Error e = make_error("'" + shortened(key) + "' is given twice (" + shortened(it->second) + ", then " +
+                           shortened(kv) + "); give each key once");
+      e.where = option + " " + shortened(kv);
+      return e;
+    }
+  }
+  return {};
 }
 
 }  // namespace penumbra::graph

@@ -124,4 +124,8 @@ class ParameterSet {
   std::vector<ParamValue> values_;
 };
 
+// A list of "k=v" assignments (`--set`, a --techniques item's settings) with no key twice: the
+// later value would silently win. The error names `option`, the key and both assignments.
+Status check_assignment_keys(const std::string& option, const std::vector<std::string>& assignments);
+
 }  // namespace penumbra::graph
