@@ -160,11 +160,7 @@ Status SandboxController::set_light_position(const glm::vec3& position) {
 
 Status SandboxController::set_spot_angle(float radians) {
   if (Status s = light_change_allowed(); !s) return s;
-  const float degrees = glm::degrees(radians);
-  if (!(degrees >= scene::kMinSpotAngleDegrees && degrees <= scene::kMaxSpotAngleDegrees))
-    return make_error("spot angle " + shortened(std::to_string(degrees), 12) + " deg is outside [" +
-                      std::to_string(static_cast<int>(scene::kMinSpotAngleDegrees)) + ", " +
-                      std::to_string(static_cast<int>(scene::kMaxSpotAngleDegrees)) + "] (the cone's half-angle)");
+  if (Status s = scene::check_spot_angle_degrees(glm::degrees(radians)); !s) return s;
   light().spot_angle = radians;
   return {};
 }

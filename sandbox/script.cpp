@@ -224,10 +224,7 @@ void parse_body(ScriptStep& s, const json& v) {
       }
       if (v.contains("spot_angle")) {
         s.light.spot_angle_deg = need_number(v["spot_angle"], "light.spot_angle (degrees)");
-        if (!(*s.light.spot_angle_deg >= scene::kMinSpotAngleDegrees && *s.light.spot_angle_deg <= scene::kMaxSpotAngleDegrees))
-          problem("light.spot_angle must be in [" + std::to_string(static_cast<int>(scene::kMinSpotAngleDegrees)) + ", " +
-                  std::to_string(static_cast<int>(scene::kMaxSpotAngleDegrees)) + "] degrees (the cone's half-angle), got " +
-                  echo(v["spot_angle"]));
+        if (Status a = scene::check_spot_angle_degrees(*s.light.spot_angle_deg); !a) problem("light." + a.error().message);
       }
       break;
     case StepKind::compare:

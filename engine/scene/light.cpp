@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -35,6 +36,14 @@ static glm::mat4 light_view(const Light& light) {
   emitter_basis(light.direction, t, b);
   // Use the bitangent as "up" so the shadow map's axes match the emitter basis.
   return glm::lookAt(light.position, light.position + light.direction, b);
+}
+
+Status check_spot_angle_degrees(float degrees) {
+  if (degrees >= kMinSpotAngleDegrees && degrees <= kMaxSpotAngleDegrees) return {};
+  char text[96];
+  std::snprintf(text, sizeof text, "spot angle %.4g degrees is outside [%g, %g] (the cone's half-angle)", degrees,
+                kMinSpotAngleDegrees, kMaxSpotAngleDegrees);
+  return make_error(text);
 }
 
 const char* light_type_name(LightType type) {

@@ -27,6 +27,8 @@
 
 #include <glm/glm.hpp>
 
+#include "util/error.h"
+
 namespace penumbra::scene {
 
 struct Bounds;
@@ -40,6 +42,8 @@ const char* light_type_name(LightType type);
 // shadow map can hold (light_view_projection's fov is twice the half-angle).
 inline constexpr float kMinSpotAngleDegrees = 1.0f;
 inline constexpr float kMaxSpotAngleDegrees = 89.0f;
+// An error naming the accepted range when `degrees` is outside it (NaN too).
+Status check_spot_angle_degrees(float degrees);
 
 struct Light {
   LightType type = LightType::directional;
