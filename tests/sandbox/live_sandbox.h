@@ -65,8 +65,12 @@ class LiveSandbox {
     if (r.exit_code != 0) throw std::runtime_error("xdotool " + args + ": " + r.output);
     return r.output;
   }
-  // The state once `frames` more frames are drawn (input sent before is handled by then).
+  // The state once `frames` more frames are drawn after the newest one written now (input sent
+  // before is handled by then when frames >= 2: the next frame may have polled its events just
+  // before the input arrived). Counting from the last state read instead raced: under load the
+  // sandbox is often frames ahead of it, and the wait ended before the input was handled.
   nlohmann::json settle(int frames = 4) {
+    read_state();
     const int from = state_.value("frame", 0);
     return wait_for([&](const nlohmann::json& s) { return s.value("frame", 0) >= from + frames; }, 60.0,
                     std::to_string(frames) + " more frames");
@@ -171,15 +175,18 @@ class LiveSandbox {
     RunResult r = run("sh " + q(script) + " </dev/null >/dev/null 2>&1 & echo $!");
     return static_cast<pid_t>(std::atoi(r.output.c_str()));
   }
+  // The newest complete state the sandbox has written (a half-written file is skipped).
+  void read_state() {
+    std::ifstream in(state_file_);
+    if (!in) return;
+    nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
+    if (!s.is_discarded()) state_ = std::move(s);
+  }
   template <class Done>
   const nlohmann::json& wait_for(Done done, double seconds, const std::string& what) {
     const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     while (std::chrono::steady_clock::now() < until) {
-      std::ifstream in(state_file_);
-      if (in) {
-        nlohmann::json s = nlohmann::json::parse(in, nullptr, false);
-        if (!s.is_discarded()) state_ = std::move(s);
-      }
+      read_state();
       if (!state_.is_null() && done(state_)) return state_;
       if (sandbox_pid_ > 0 && ::kill(sandbox_pid_, 0) != 0) break;
       std::this_thread::sleep_for(std::chrono::milliseconds(30));
