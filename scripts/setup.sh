@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libosmesa6-dev libegl-dev libgl1-mesa-dev
   libegl-mesa0 libspdlog-dev python3-glad libstb-dev nlohmann-json3-dev libembree-dev
-  libgtest-dev libbenchmark-dev libnlopt-dev libgraphviz-dev python3-matplotlib xvfb xauth xdotool clang libclang-rt-14-dev
+  libdraco-dev libmeshoptimizer-dev libgtest-dev libbenchmark-dev libnlopt-dev libgraphviz-dev python3-matplotlib xvfb xauth xdotool clang libclang-rt-14-dev
 )
 
 missing=()

@@ -13,11 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Error plugin_error(const fs::path& file, std::string message) {
-  Error e = make_error(std::move(message));
-  e.file = file.string();
-  return e;
-}
+Error plugin_error(const fs::path& file, std::string message) { return file_error(file.string(), std::move(message)); }
 
 Error abi_mismatch(const fs::path& file, int version) {
   return plugin_error(file, "plugin ABI version " + std::to_string(version) + ", this Penumbra's is " +

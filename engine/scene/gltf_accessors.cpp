@@ -1,5 +1,6 @@
 #include "scene/gltf_accessors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -8,10 +9,7 @@
 namespace penumbra::scene::gltf {
 
 static Error accessor_error(const std::string& file, const std::string& what, const std::string& msg) {
-  Error e = make_error(msg);
-  e.file = file;
-  e.where = what;
-  return e;
+  return file_error(file, msg, what);
 }
 
 static size_t component_size(int type) {
@@ -97,46 +95,76 @@ static T load(const uint8_t* p) {
   return t;
 }
 
-Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor,
-                                         const std::string& file, const std::string& what) {
+// One component as a float: floats as they are; integers dequantized as KHR_mesh_quantization
+// and the glTF 2.0 spec (3.11, "normalized") state: normalized signed c -> max(c / max, -1),
+// unsigned c -> c / max; not normalized, the integer's value.
+static float component(const uint8_t* p, int type, bool normalized) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return load<float>(p);
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      const float c = static_cast<float>(load<int8_t>(p));
+      return normalized ? std::max(c / 127.0f, -1.0f) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? p[0] / 255.0f : static_cast<float>(p[0]);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      const float c = static_cast<float>(load<int16_t>(p));
+      return normalized ? std::max(c / 32767.0f, -1.0f) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      const float c = static_cast<float>(load<uint16_t>(p));
+      return normalized ? c / 65535.0f : c;
+    }
+    default: return 0.0f;  // refused by read_floats before it gets here
+  }
+}
+
+// `n` floats per element from a FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT accessor.
+template <int N>
+static Result<std::vector<glm::vec<N, float>>> read_floats(const tinygltf::Model& model, int accessor,
+                                                          AttributeKind kind, const std::string& file,
+                                                          const std::string& what) {
   Result<AccessorView> v = view_accessor(model, accessor, file, what);
   if (!v) return v.error();
-  if (v->component_type != TINYGLTF_COMPONENT_TYPE_FLOAT || v->components != 3)
-    return accessor_error(file, what, "accessor " + std::to_string(accessor) + " must be VEC3 of FLOAT");
-  std::vector<glm::vec3> out(v->count);
+  const std::string id = "accessor " + std::to_string(accessor);
+  if (v->components != N)
+    return accessor_error(file, what, id + " must be VEC" + std::to_string(N));
+  const int t = v->component_type;
+  const bool integer = t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                       t == TINYGLTF_COMPONENT_TYPE_SHORT || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+  if (t != TINYGLTF_COMPONENT_TYPE_FLOAT && !integer)
+    return accessor_error(file, what, id + " has component type " + std::to_string(t) +
+                                          "; FLOAT, or with KHR_mesh_quantization BYTE, UNSIGNED_BYTE, SHORT or "
+                                          "UNSIGNED_SHORT, are allowed");
+  // KHR_mesh_quantization: normals are normalized BYTE or SHORT, never raw integers.
+  if (kind == AttributeKind::normal && integer &&
+      (!v->normalized || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
+    return accessor_error(file, what, id + " is an integer NORMAL that is not normalized BYTE or SHORT "
+                                          "(KHR_mesh_quantization)");
+  const size_t csize = t == TINYGLTF_COMPONENT_TYPE_FLOAT ? 4 : (t == TINYGLTF_COMPONENT_TYPE_SHORT ||
+                                                                 t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) ? 2 : 1;
+  std::vector<glm::vec<N, float>> out(v->count);
   for (size_t i = 0; i < v->count; ++i) {
     const uint8_t* p = v->data + i * v->stride;
-    out[i] = {load<float>(p), load<float>(p + 4), load<float>(p + 8)};
-    // A NaN or infinite position draws nothing (or everything) and poisons the bounds the camera
-    // and light are fitted to: refuse it where it is.
-    if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
-      return accessor_error(file, what, "accessor " + std::to_string(accessor) + " element " + std::to_string(i) +
-                                            " is not finite (NaN or infinity)");
+    for (int c = 0; c < N; ++c) {
+      const float x = component(p + static_cast<size_t>(c) * csize, t, v->normalized);
+      // A NaN or infinite value draws nothing (or everything) and poisons the bounds the camera
+      // and light are fitted to: refuse it where it is.
+      if (!std::isfinite(x))
+        return accessor_error(file, what, id + " element " + std::to_string(i) + " is not finite (NaN or infinity)");
+      out[i][c] = x;
+    }
   }
   return out;
 }
 
-Result<std::vector<glm::vec2>> read_uv(const tinygltf::Model& model, int accessor,
-                                       const std::string& file, const std::string& what) {
-  Result<AccessorView> v = view_accessor(model, accessor, file, what);
-  if (!v) return v.error();
-  if (v->components != 2)
-    return accessor_error(file, what, "accessor " + std::to_string(accessor) + " must be VEC2");
-  std::vector<glm::vec2> out(v->count);
-  for (size_t i = 0; i < v->count; ++i) {
-    const uint8_t* p = v->data + i * v->stride;
-    switch (v->component_type) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: out[i] = {load<float>(p), load<float>(p + 4)}; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = glm::vec2(p[0], p[1]) / 255.0f; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        out[i] = glm::vec2(load<uint16_t>(p), load<uint16_t>(p + 2)) / 65535.0f;
-        break;
-      default:
-        return accessor_error(file, what, "accessor " + std::to_string(accessor) +
-                                              " has a TEXCOORD component type glTF does not allow");
-    }
-  }
-  return out;
+Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor, AttributeKind kind,
+                                         const std::string& file, const std::string& what) {
+  return read_floats<3>(model, accessor, kind, file, what);
+}
+
+Result<std::vector<glm::vec2>> read_uv(const tinygltf::Model& model, int accessor, const std::string& file,
+                                       const std::string& what) {
+  return read_floats<2>(model, accessor, AttributeKind::texcoord, file, what);
 }
 
 Result<std::vector<uint32_t>> read_indices(const tinygltf::Model& model, int accessor, size_t vertex_count,

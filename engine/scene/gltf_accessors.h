@@ -32,11 +32,22 @@ struct AccessorView {
 Result<AccessorView> view_accessor(const tinygltf::Model& model, int accessor, const std::string& file,
                                    const std::string& what);
 
-Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor,
+// Attributes are FLOAT or, as KHR_mesh_quantization allows, BYTE / UNSIGNED_BYTE / SHORT /
+// UNSIGNED_SHORT, normalized or not (normals: normalized BYTE or SHORT only), dequantized to
+// float; every value must be finite.
+enum class AttributeKind { position, normal, texcoord };
+Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor, AttributeKind kind,
                                          const std::string& file, const std::string& what);
-// TEXCOORD: float, or normalized unsigned byte / short (glTF 2.0 allows all three).
 Result<std::vector<glm::vec2>> read_uv(const tinygltf::Model& model, int accessor,
                                        const std::string& file, const std::string& what);
+// A primitive's vertex data as the loader uses it, from accessors or a decoded Draco stream.
+struct VertexArrays {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;  // empty: none in the file
+  std::vector<glm::vec2> uvs;      // the texture coordinate set the material samples; empty: none
+  std::vector<uint32_t> indices;   // empty: not indexed
+};
+
 // Indices: unsigned byte / short / int; each must be < vertex_count.
 Result<std::vector<uint32_t>> read_indices(const tinygltf::Model& model, int accessor,
                                            size_t vertex_count, const std::string& file,

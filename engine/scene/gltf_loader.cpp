@@ -15,7 +15,12 @@
 #include <tiny_gltf.h>
 
 #include "scene/framing.h"
+#include "scene/glb_container.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_draco.h"
+#include "scene/gltf_extension_data.h"
+#include "scene/gltf_extension_table.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_spec_checks.h"
 #include "util/file_read.h"
 #include "util/json_text.h"
@@ -23,29 +28,9 @@
 namespace penumbra::scene {
 namespace {
 
-// Extensions a file may list as required: the ones whose meaning the loader implements.
-constexpr const char* kSupportedRequiredExtensions[] = {"KHR_lights_punctual"};
-
 // tinygltf takes a 32-bit size; 1 GiB is far above any model we have met (the largest real
 // asset we test, 216k triangles with textures, is under 20 MB).
 constexpr std::size_t kMaxGltfFileBytes = std::size_t{1} << 30;
-
-// A .glb holds its JSON in the first chunk (glTF 2.0, 4.4.3); a malformed header gives no JSON
-// here and tinygltf's own error later.
-std::string_view gltf_json_part(std::string_view bytes, bool binary) {
-  if (!binary) return bytes;
-  if (bytes.size() < 20 || bytes.substr(0, 4) != "glTF" || bytes.substr(16, 4) != "JSON") return {};
-  std::uint32_t length = 0;
-  std::memcpy(&length, bytes.data() + 12, 4);
-  return bytes.substr(20, length);
-}
-
-Error file_error(const std::string& file, std::string message, std::string where = {}) {
-  Error e = make_error(std::move(message));
-  e.file = file;
-  e.where = std::move(where);
-  return e;
-}
 
 const char* mode_name(int mode) {
   switch (mode) {
@@ -133,39 +118,82 @@ void make_flat_normals(Mesh& mesh) {
   for (size_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = static_cast<uint32_t>(i);
 }
 
+// Which texture coordinates the base colour texture samples, and how they are transformed.
+struct BaseColorCoordinates {
+  int set = 0;  // TEXCOORD_<set>
+  const gltf::TextureTransform* transform = nullptr;
+};
+
+BaseColorCoordinates base_color_coordinates(const tinygltf::Model& model, int material,
+                                            const gltf::ExtensionData& extensions) {
+  BaseColorCoordinates out;
+  if (material < 0 || static_cast<size_t>(material) >= model.materials.size()) return out;
+  out.set = model.materials[static_cast<size_t>(material)].pbrMetallicRoughness.baseColorTexture.texCoord;
+  if (const auto it = extensions.base_color_transform.find(static_cast<size_t>(material));
+      it != extensions.base_color_transform.end()) {
+    out.transform = &it->second;
+    if (it->second.tex_coord) out.set = *it->second.tex_coord;  // the extension's texCoord overrides
+  }
+  out.set = std::max(out.set, 0);
+  return out;
+}
+
+// The vertex arrays of a primitive stored in accessors (plain, quantized or meshopt-decoded).
+Result<gltf::VertexArrays> read_accessors(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                                          const std::string& uv_attribute, const std::string& where,
+                                          const std::string& file) {
+  gltf::VertexArrays out;
+  const auto pos_it = prim.attributes.find("POSITION");
+  if (pos_it == prim.attributes.end()) return file_error(file, "primitive has no POSITION attribute", where);
+  auto positions = gltf::read_vec3(model, pos_it->second, gltf::AttributeKind::position, file, where + " POSITION");
+  if (!positions) return positions.error();
+  out.positions = std::move(*positions);
+  if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+    auto normals = gltf::read_vec3(model, it->second, gltf::AttributeKind::normal, file, where + " NORMAL");
+    if (!normals) return normals.error();
+    out.normals = std::move(*normals);
+  }
+  if (auto it = prim.attributes.find(uv_attribute); !uv_attribute.empty() && it != prim.attributes.end()) {
+    auto uvs = gltf::read_uv(model, it->second, file, where + " " + uv_attribute);
+    if (!uvs) return uvs.error();
+    out.uvs = std::move(*uvs);
+  }
+  if (prim.indices >= 0) {
+    auto idx = gltf::read_indices(model, prim.indices, out.positions.size(), file, where + " indices");
+    if (!idx) return idx.error();
+    out.indices = std::move(*idx);
+  }
+  return out;
+}
+
 Result<Mesh> convert_primitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                               const gltf::DracoPrimitive* draco, const BaseColorCoordinates& uv,
                                const std::string& where, uint32_t default_material, const std::string& file) {
   const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
   if (mode != TINYGLTF_MODE_TRIANGLES)
     return file_error(file, std::string("unsupported primitive mode ") + mode_name(mode) + " (" +
                                 std::to_string(mode) + "); only TRIANGLES (4) is supported", where);
-  const auto pos_it = prim.attributes.find("POSITION");
-  if (pos_it == prim.attributes.end()) return file_error(file, "primitive has no POSITION attribute", where);
-  Result<std::vector<glm::vec3>> positions = gltf::read_vec3(model, pos_it->second, file, where + " POSITION");
-  if (!positions) return positions.error();
-  const size_t n = positions->size();
+  const std::string uv_attribute = "TEXCOORD_" + std::to_string(uv.set);
+  Result<gltf::VertexArrays> arrays = draco ? gltf::decode_draco_primitive(model, prim, *draco, uv_attribute, file, where)
+                                            : read_accessors(model, prim, uv_attribute, where, file);
+  if (!arrays) return arrays.error();
+  const size_t n = arrays->positions.size();
+  if (!arrays->normals.empty() && arrays->normals.size() != n)
+    return file_error(file, "NORMAL count differs from POSITION count", where);
+  if (!arrays->uvs.empty() && arrays->uvs.size() != n)
+    return file_error(file, uv_attribute + " count differs from POSITION count", where);
 
   Mesh mesh;
   mesh.vertices.resize(n);
-  for (size_t i = 0; i < n; ++i) mesh.vertices[i].position = (*positions)[i];
-  bool has_normals = false;
-  if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-    Result<std::vector<glm::vec3>> normals = gltf::read_vec3(model, it->second, file, where + " NORMAL");
-    if (!normals) return normals.error();
-    if (normals->size() != n) return file_error(file, "NORMAL count differs from POSITION count", where);
-    for (size_t i = 0; i < n; ++i) mesh.vertices[i].normal = (*normals)[i];
-    has_normals = true;
+  for (size_t i = 0; i < n; ++i) {
+    mesh.vertices[i].position = arrays->positions[i];
+    if (!arrays->normals.empty()) mesh.vertices[i].normal = arrays->normals[i];
+    // KHR_texture_transform is affine, so applying it to the vertices is exact under linear
+    // interpolation, and every consumer (rasterised maps, both references) sees the same mask.
+    if (!arrays->uvs.empty()) mesh.vertices[i].uv = uv.transform ? uv.transform->apply(arrays->uvs[i]) : arrays->uvs[i];
   }
-  if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
-    Result<std::vector<glm::vec2>> uvs = gltf::read_uv(model, it->second, file, where + " TEXCOORD_0");
-    if (!uvs) return uvs.error();
-    if (uvs->size() != n) return file_error(file, "TEXCOORD_0 count differs from POSITION count", where);
-    for (size_t i = 0; i < n; ++i) mesh.vertices[i].uv = (*uvs)[i];
-  }
-  if (prim.indices >= 0) {
-    Result<std::vector<uint32_t>> idx = gltf::read_indices(model, prim.indices, n, file, where + " indices");
-    if (!idx) return idx.error();
-    mesh.indices = std::move(*idx);
+  if (!arrays->indices.empty()) {
+    mesh.indices = std::move(arrays->indices);
   } else {
     mesh.indices.resize(n);
     for (size_t i = 0; i < n; ++i) mesh.indices[i] = static_cast<uint32_t>(i);
@@ -173,7 +201,7 @@ Result<Mesh> convert_primitive(const tinygltf::Model& model, const tinygltf::Pri
   if (mesh.indices.size() % 3 != 0)
     return file_error(file, "TRIANGLES primitive has " + std::to_string(mesh.indices.size()) +
                                 " indices, not a multiple of 3", where);
-  if (!has_normals) make_flat_normals(mesh);
+  if (arrays->normals.empty()) make_flat_normals(mesh);
   mesh.material = prim.material >= 0 && static_cast<size_t>(prim.material) < model.materials.size()
                       ? static_cast<uint32_t>(prim.material) : default_material;
   return mesh;
@@ -242,9 +270,15 @@ Result<Scene> load_gltf(const std::string& path) {
   const bool binary = std::filesystem::path(path).extension() == ".glb";
   Result<std::string> bytes = read_file_whole(path, kMaxGltfFileBytes);
   if (!bytes) return bytes.error();
+  std::string_view json_text = *bytes;
+  if (binary) {
+    Result<glb::Chunks> chunks = glb::split(*bytes, path);
+    if (!chunks) return chunks.error();
+    json_text = chunks->json;
+  }
   // The JSON part goes through the one nesting limit before tinygltf's parser (which recurses)
   // sees it; duplicate keys are left to the parser: a glTF file is not ours to be strict about.
-  if (std::optional<JsonTextProblem> p = scan_json_text(gltf_json_part(*bytes, binary), /*duplicate_keys=*/false)) {
+  if (std::optional<JsonTextProblem> p = scan_json_text(json_text, /*duplicate_keys=*/false)) {
     Error e = file_error(path, "glTF JSON: " + p->message);
     if (!binary) {
       e.line = p->line;
@@ -252,7 +286,12 @@ Result<Scene> load_gltf(const std::string& path) {
     }
     return e;
   }
-  if (Status s = check_gltf_spec_values(gltf_json_part(*bytes, binary), path); !s) return s.error();
+  if (Status s = check_gltf_spec_values(json_text, path); !s) return s.error();
+
+  Result<gltf::PreparedFile> prepared = gltf::prepare_extensions(std::move(*bytes), binary, path);
+  if (!prepared) return prepared.error();
+  const gltf::ExtensionData& extensions = prepared->extensions;
+  const std::string& file_bytes = prepared->bytes;
 
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
@@ -260,10 +299,10 @@ Result<Scene> load_gltf(const std::string& path) {
   const std::string base_dir = std::filesystem::path(path).parent_path().string();
   bool ok = false;
   try {
-    const auto size = static_cast<unsigned int>(bytes->size());
+    const auto size = static_cast<unsigned int>(file_bytes.size());
     ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                              reinterpret_cast<const unsigned char*>(bytes->data()), size, base_dir)
-                : loader.LoadASCIIFromString(&model, &err, &warn, bytes->data(), size, base_dir);
+                                              reinterpret_cast<const unsigned char*>(file_bytes.data()), size, base_dir)
+                : loader.LoadASCIIFromString(&model, &err, &warn, file_bytes.data(), size, base_dir);
   } catch (const std::exception& e) {
     // tinygltf indexes some arrays unchecked with .at(): a malformed file throws instead of
     // returning its error (found by fuzz_gltf).
@@ -280,16 +319,8 @@ Result<Scene> load_gltf(const std::string& path) {
     return file_error(path, std::string("invalid or truncated ") + (binary ? ".glb" : ".gltf") + " file: " +
                                 shortened(err, 300));
   }
-  // A required extension we do not implement changes what the data means (Draco-compressed
-  // geometry has no plain accessors): refuse the file rather than render garbage.
-  for (const std::string& ext : model.extensionsRequired)
-    if (std::find(std::begin(kSupportedRequiredExtensions), std::end(kSupportedRequiredExtensions), ext) ==
-        std::end(kSupportedRequiredExtensions)) {
-      std::string supported;
-      for (const char* s : kSupportedRequiredExtensions) supported += (supported.empty() ? "" : ", ") + std::string(s);
-      return file_error(path, "requires the glTF extension '" + shortened(ext) + "', which Penumbra does not support "
-                              "(supported: " + supported + ")");
-    }
+  if (Status st = check_required_gltf_extensions(model.extensionsRequired, path); !st) return st.error();
+  if (Status st = gltf::decode_meshopt_views(model, extensions, path); !st) return st.error();
 
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
@@ -299,7 +330,19 @@ Result<Scene> load_gltf(const std::string& path) {
     if (!img) return img.error();
     scene.images.push_back(std::move(*img));
   }
-  for (const tinygltf::Material& m : model.materials) scene.materials.push_back(convert_material(model, m));
+  for (size_t i = 0; i < model.materials.size(); ++i) {
+    const tinygltf::Material& m = model.materials[i];
+    scene.materials.push_back(convert_material(model, m));
+    // A texture only in KTX2, WebP or AVIF (no PNG or JPEG source) is drawn untextured; for an
+    // alpha-tested material that would lose the mask its shadow is cut by.
+    const int tex = m.pbrMetallicRoughness.baseColorTexture.index;
+    if (scene.materials.back().alpha_mode == AlphaMode::mask && tex >= 0 &&
+        scene.materials.back().base_color_texture < 0)
+      return file_error(path, "the alpha-masked material's base colour texture " + std::to_string(tex) +
+                                  " has no PNG or JPEG image (only an extension's format, such as KTX2, WebP or "
+                                  "AVIF, which Penumbra does not decode): its shadow would lose the mask",
+                        "material " + std::to_string(i) + " '" + shortened(m.name) + "'");
+  }
   const uint32_t default_material = static_cast<uint32_t>(scene.materials.size());
   scene.materials.push_back(Material{.name = "default"});
 
@@ -310,7 +353,11 @@ Result<Scene> load_gltf(const std::string& path) {
     const tinygltf::Mesh& gm = model.meshes[mi];
     for (size_t pi = 0; pi < gm.primitives.size(); ++pi) {
       const std::string where = "mesh " + std::to_string(mi) + " '" + gm.name + "' primitive " + std::to_string(pi);
-      Result<Mesh> mesh = convert_primitive(model, gm.primitives[pi], where, default_material, path);
+      const tinygltf::Primitive& prim = gm.primitives[pi];
+      const auto draco = extensions.draco.find({mi, pi});
+      Result<Mesh> mesh = convert_primitive(model, prim, draco == extensions.draco.end() ? nullptr : &draco->second,
+                                            base_color_coordinates(model, prim.material, extensions), where,
+                                            default_material, path);
       if (!mesh) return mesh.error();
       mesh->name = gm.name;
       scene.meshes.push_back(std::move(*mesh));

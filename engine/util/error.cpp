@@ -25,6 +25,13 @@ Error make_error(std::string message, ErrorKind kind) {
   return e;
 }
 
+Error file_error(std::string file, std::string message, std::string where) {
+  Error e = make_error(std::move(message));
+  e.file = std::move(file);
+  e.where = std::move(where);
+  return e;
+}
+
 std::string shortened(std::string_view text, size_t max) {
   return text.size() <= max ? std::string(text) : std::string(text.substr(0, max)) + "...";
 }

@@ -32,6 +32,8 @@ struct Error {
 };
 
 Error make_error(std::string message, ErrorKind kind = ErrorKind::bad_input);
+// A bad-input error about a file, with the place in it when known ("mesh 2 primitive 0").
+Error file_error(std::string file, std::string message, std::string where = {});
 
 // `text` cut to `max` characters with "..." appended: input echoed in a message stays one short
 // line whatever the input is.

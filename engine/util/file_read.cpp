@@ -20,11 +20,7 @@ const char* kind_of_special_file(const std::filesystem::file_status& st) {
 
 Result<std::string> read_file_whole(const std::string& path, std::size_t max_bytes) {
   namespace fs = std::filesystem;
-  auto fail = [&](std::string message) {
-    Error e = make_error(std::move(message));
-    e.file = path;
-    return e;
-  };
+  auto fail = [&](std::string message) { return file_error(path, std::move(message)); };
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (ec || !fs::exists(st)) return fail("file not found");
@@ -57,9 +53,7 @@ Status check_directory(const std::string& path) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
   if (fs::is_directory(st)) return {};
-  Error e = make_error(fs::exists(st) ? "is not a directory" : "directory does not exist");
-  e.file = path;
-  return e;
+  return file_error(path, fs::exists(st) ? "is not a directory" : "directory does not exist");
 }
 
 }  // namespace penumbra

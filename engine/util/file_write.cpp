@@ -10,20 +10,14 @@ Status move_into_place(const std::string& tmp, const std::string& path) {
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
     std::filesystem::remove(tmp, ec);
-    Error e = make_error("cannot move the written file into place: " + ec.message());
-    e.file = path;
-    return e;
+    return file_error(path, "cannot move the written file into place: " + ec.message());
   }
   return {};
 }
 
 Status check_output_path(const std::string& path) {
   namespace fs = std::filesystem;
-  auto fail = [&](std::string message) {
-    Error e = make_error(std::move(message));
-    e.file = path;
-    return e;
-  };
+  auto fail = [&](std::string message) { return file_error(path, std::move(message)); };
   std::error_code ec;
   if (fs::is_directory(path, ec)) return fail("is a directory, not a file");
   const fs::path parent = fs::path(path).parent_path();
@@ -43,9 +37,7 @@ Status write_file_whole(const std::string& path, const std::string& text) {
     if (!f) {
       std::error_code ec;
       std::filesystem::remove(tmp, ec);
-      Error e = make_error("cannot write the file (does the directory exist and is it writable?)");
-      e.file = path;
-      return e;
+      return file_error(path, "cannot write the file (does the directory exist and is it writable?)");
     }
   }
   return move_into_place(tmp, path);

@@ -7,6 +7,8 @@ find_package(spdlog CONFIG REQUIRED)
 find_package(nlohmann_json CONFIG REQUIRED)
 find_package(Threads REQUIRED)
 find_package(embree 3 CONFIG REQUIRED)
+find_package(draco CONFIG REQUIRED)         # glTF KHR_draco_mesh_compression
+find_package(meshoptimizer CONFIG REQUIRED)  # glTF EXT_meshopt_compression
 find_package(NLopt CONFIG REQUIRED)  # penumbra calibrate: Nelder-Mead
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
