@@ -2,7 +2,8 @@
 // technique (or the named ones) with its description and parameters, read from the technique's
 // graph JSON (technique::load_technique_graph): the one description the sandbox UI, presets and
 // `--set` also use. `--markdown` prints the parameter table a technique's README embeds (a test
-// keeps the READMEs equal to it). Needs no GL context.
+// keeps the READMEs equal to it). Every graph is compiled too (passes/technique_graph_check.h), so
+// a broken one is marked, not listed as fine. Needs no GL context.
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include "technique/technique.h"
 #include "techniques/builtin_techniques.h"
 #include "passes/shared_passes.h"
+#include "passes/technique_graph_check.h"
 
 namespace penumbra::cli {
 namespace {
@@ -110,7 +112,9 @@ int cmd_techniques(const std::vector<std::string>& argv) {
     return print_help("penumbra techniques [NAME...] [--json | --markdown] [--plugin-dir DIR]...",
                       "Lists every registered shadow technique (or the named ones) with its\n"
                       "description and parameters (type, default, range, unit, description,\n"
-                      "structural), all read from the technique's graph JSON.",
+                      "structural), all read from the technique's graph JSON. Each graph is also\n"
+                      "compiled at its defaults; one that does not compile is marked BROKEN with\n"
+                      "its errors (graph_errors in --json) and the exit status is 2.",
                       kSpecs);
   auto args = parse_args(argv, kSpecs);
   if (!args) {
@@ -144,13 +148,22 @@ int cmd_techniques(const std::vector<std::string>& argv) {
 
   const bool json = args->has("json"), markdown = args->has("markdown");
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  std::string broken;
   for (const technique::Technique* technique : selected) {
     const technique::Technique& t = *technique;
+    // A graph that loads can still fail to compile (a format a slot does not take, a read of a
+    // resource nobody writes): such a technique is listed as broken, with why.
+    const std::vector<Error> errors = technique_graph_errors(registry, t);
+    if (!errors.empty()) broken += (broken.empty() ? "" : ", ") + t.name;
     Result<graph::GraphDesc> g = load_technique_graph(registry, t);
-    if (!g) {
-      std::fprintf(stderr, "penumbra techniques: technique '%s': %s\n%s", t.name.c_str(),
-                   g.error().to_string().c_str(), g.error().details.c_str());
-      return g.error().exit_code();
+    if (!g || (markdown && !errors.empty())) {
+      const Error& e = g ? errors.front() : g.error();
+      std::fprintf(stderr, "penumbra techniques: technique '%s': %s\n%s", t.name.c_str(), e.to_string().c_str(),
+                   e.details.c_str());
+      if (markdown) return e.exit_code();
+      if (json) all.push_back({{"name", t.name}, {"graph_file", t.graph_file}, {"graph_errors", {e.to_string()}}});
+      else std::printf("%s\n  BROKEN: its graph does not load: %s\n\n", t.name.c_str(), e.to_string().c_str());
+      continue;
     }
     if (markdown) {
       if (selected.size() > 1) std::printf("### %s\n\n%s\n\n", t.name.c_str(), g->description.c_str());
@@ -160,14 +173,25 @@ int cmd_techniques(const std::vector<std::string>& argv) {
     }
     if (!json) {
       print_text(t, *g);
+      if (!errors.empty()) {
+        std::printf("  BROKEN: its graph does not compile (%zu error%s):\n", errors.size(), errors.size() == 1 ? "" : "s");
+        for (const Error& e : errors) std::printf("    %s\n", e.to_string().c_str());
+        std::printf("\n");
+      }
       continue;
     }
     nlohmann::ordered_json params = nlohmann::ordered_json::array();
     for (const graph::ParamDesc& p : g->parameters) params.push_back(param_json(p));
+    nlohmann::ordered_json error_texts = nlohmann::ordered_json::array();
+    for (const Error& e : errors) error_texts.push_back(e.to_string());
     all.push_back({{"name", t.name}, {"description", g->description}, {"graph_file", t.graph_file},
-                   {"parameters", params}});
+                   {"parameters", params}, {"graph_errors", error_texts}});
   }
   if (json) std::printf("%s\n", all.dump(2).c_str());
+  if (!broken.empty()) {
+    std::fprintf(stderr, "penumbra techniques: these techniques' graphs do not compile: %s\n", broken.c_str());
+    return 2;
+  }
   return 0;
 }
 

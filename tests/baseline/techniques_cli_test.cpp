@@ -14,6 +14,7 @@
 
 #include "technique/technique.h"
 #include "test_support/run_command.h"
+#include "test_support/temp_dir.h"
 #include "techniques/builtin_techniques.h"
 
 namespace penumbra::test {
@@ -75,6 +76,47 @@ TEST(TechniquesCommand, TextListsParametersAndBadOptionsExitTwo) {
   EXPECT_EQ(run_cli("techniques --bogus").exit_code, 2);
   EXPECT_EQ(run_cli("techniques extra").exit_code, 2);
   EXPECT_EQ(run_cli("techniques --help").exit_code, 0);
+}
+
+// A graph that loads but does not compile (a format its slot does not take), and one that does
+// not load at all, are listed as broken with their errors and the file; the others as before;
+// the exit status says something is broken. PENUMBRA_SHADER_DIR puts the edited graphs first.
+TEST(TechniquesCommand, AGraphThatDoesNotCompileIsListedAsBrokenWithItsErrors) {
+  const std::filesystem::path dir = fresh_temp_dir("techniques_broken_graph");
+  std::filesystem::create_directories(dir / "techniques" / "baseline");
+  std::ifstream in(std::string(PENUMBRA_SOURCE_DIR) + "/techniques/baseline/pcf.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string pcf = text.str();
+  const size_t at = pcf.find("\"DEPTH32F\"");
+  ASSERT_NE(at, std::string::npos) << pcf;
+  pcf.replace(at, 10, "\"R16F\"");
+  std::ofstream(dir / "techniques" / "baseline" / "pcf.json") << pcf;
+  std::ofstream(dir / "techniques" / "baseline" / "hard.json") << "{\"name\": ";
+  const std::string env = "PENUMBRA_SHADER_DIR=" + shell_quote(dir.string()) + " ";
+
+  CommandRun listing = run_command(env + PENUMBRA_CLI + " techniques hard pcf pcss");
+  EXPECT_EQ(listing.exit_code, 2) << listing.output;
+  const std::string file = (dir / "techniques" / "baseline" / "pcf.json").string();
+  EXPECT_NE(listing.output.find("BROKEN: its graph does not compile"), std::string::npos) << listing.output;
+  EXPECT_NE(listing.output.find(file + ": /passes/"), std::string::npos) << listing.output;
+  EXPECT_NE(listing.output.find("format R16F not accepted"), std::string::npos) << listing.output;
+  EXPECT_NE(listing.output.find("hard\n  BROKEN: its graph does not load"), std::string::npos) << listing.output;
+  EXPECT_NE(listing.output.find("pcss\n"), std::string::npos) << listing.output;
+  EXPECT_NE(listing.output.find("do not compile: hard, pcf"), std::string::npos) << listing.output;
+
+  CommandRun json = run_command("{ " + env + PENUMBRA_CLI + " techniques pcf pcss --json 2>/dev/null; }");  // stdout only
+  EXPECT_EQ(json.exit_code, 2);
+  const nlohmann::json list = nlohmann::json::parse(json.output, nullptr, false);
+  ASSERT_TRUE(list.is_array()) << json.output;
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_FALSE(list[0]["graph_errors"].empty());
+  EXPECT_TRUE(list[1]["graph_errors"].empty());
+
+  // The shipped graphs all compile.
+  CommandRun shipped = run_cli("techniques --json");
+  ASSERT_EQ(shipped.exit_code, 0) << shipped.output;
+  for (const nlohmann::json& t : nlohmann::json::parse(shipped.output)) EXPECT_TRUE(t["graph_errors"].empty()) << t["name"];
 }
 
 TEST(RenderCommand, BadSetValuesExitTwoWithTheValidRange) {
