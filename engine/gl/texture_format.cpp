@@ -26,6 +26,8 @@ constexpr std::array<GlEnums, graph::kFormatCount> kGl = {{
     {Format::RG16_SNORM, GL_RG16_SNORM, GL_RG},
     {Format::RGB10A2, GL_RGB10_A2, GL_RGBA},
     {Format::R11G11B10F, GL_R11F_G11F_B10F, GL_RGB},
+    {Format::RGBA16, GL_RGBA16, GL_RGBA},
+    {Format::RGBA16_SNORM, GL_RGBA16_SNORM, GL_RGBA},
 }};
 
 constexpr bool listed_in_enum_order() {

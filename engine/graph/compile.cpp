@@ -54,7 +54,11 @@ int ping_pong_partner(const CompileState& s, const ResourceUse& use) {
 Checked<CompiledPlan> compile(const GraphDesc& graph, const PassTypeRegistry& registry,
                               const ParameterSet& params, const CompileSettings& settings,
                               const CompileOptions& options) {
-  detail::CompileState s(graph, registry, params, settings, options);
+  // Formats chosen by parameters, fixed for this compile.
+  GraphErrors format_errors;
+  const std::optional<GraphDesc> chosen = detail::choose_formats(graph, params, format_errors);
+  if (!format_errors.empty()) return format_errors;
+  detail::CompileState s(chosen ? *chosen : graph, registry, params, settings, options);
   // Names -> indices; texture sizes resolved from the settings and size parameters.
   detail::index_resources(s);
   // Every `enabled` / `when` condition parsed, type-checked and evaluated once.

@@ -128,6 +128,10 @@ std::string param_location(const CompileState& s, const std::string& name);  // 
 
 // The stages, in the order compile() runs them; compile.cpp says what each decides, and each
 // lives in the file of its name.
+// Before CompileState exists: a copy of the graph with each chosen format set (nullopt when no
+// resource chooses one); errors name the resource's format.
+std::optional<GraphDesc> choose_formats(const GraphDesc& graph, const ParameterSet& params,
+                                        GraphErrors& errors);  // formats.cpp
 void index_resources(CompileState& s);              // index.cpp
 void evaluate_conditions(CompileState& s);          // conditions.cpp
 void bind_passes(CompileState& s);                  // bind.cpp

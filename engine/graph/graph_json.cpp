@@ -3,6 +3,7 @@
 // the format is docs/graph-format.md.
 #include "graph/graph_json.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -40,11 +41,7 @@ void GraphReader::read_resource(const std::string& name, const Json& j, const st
     else r.kind = *k;
   }
   if (r.kind == ResourceKind::texture || r.kind == ResourceKind::persistent) {
-    if (get_string(j, "format", ptr, text, true)) {
-      std::optional<Format> f = parse_format(text);
-      if (!f) error(GraphErrorCode::wrong_json_type, ptr + "/format", "unknown format \"" + shortened(text) + "\"; formats: " + format_names());
-      else r.format = *f;
-    }
+    read_format(j, ptr, g, r);
     if (r.kind == ResourceKind::texture && j.contains("tiles")) {
       r.per_tile = true;
       if (j.contains("size")) error(GraphErrorCode::wrong_json_type, ptr + "/size", "a texture of one texel per tile is sized by its \"tiles\"; \"size\" does not apply");
@@ -67,6 +64,48 @@ void GraphReader::read_resource(const std::string& name, const Json& j, const st
     else r.bytes = it->get<std::uint64_t>();
   }
   g.resources.push_back(std::move(r));
+}
+
+// "format": a name, "$param" (an enum parameter whose options are format names), or a choice
+// ({"if"} / {"switch"}) of names: docs/graph-format.md, "Resources".
+void GraphReader::read_format(const Json& j, const std::string& ptr, const GraphDesc& g, ResourceDecl& r) {
+  const std::string at = ptr + "/format";
+  auto it = j.find("format");
+  if (it == j.end()) {
+    error(GraphErrorCode::wrong_json_type, ptr, "missing \"format\" (string)");
+    return;
+  }
+  auto leaf = [&](const Json& v, const std::string& p, const std::string& when) {
+    std::optional<Format> f = v.is_string() ? parse_format(v.get<std::string>()) : std::nullopt;
+    if (!f) {
+      error(GraphErrorCode::wrong_json_type, p, "unknown format " + shortened(v.dump()) + "; formats: " + format_names());
+      return;
+    }
+    r.format_choices.push_back({when, *f});
+  };
+  if (it->is_string() && it->get<std::string>().rfind("$", 0) == 0) {
+    const std::string name = it->get<std::string>().substr(1);
+    const auto d = std::find_if(g.parameters.begin(), g.parameters.end(), [&](const ParamDesc& p) { return p.name == name; });
+    if (d == g.parameters.end() || d->type != ParamType::enumeration) {
+      error(d == g.parameters.end() ? GraphErrorCode::unknown_param_reference : GraphErrorCode::param_wrong_type, at,
+            "format \"$" + shortened(name) + "\" needs an enum parameter '" + shortened(name) +
+                "' whose options are format names" + (d == g.parameters.end() ? "; there is none" : "; it is not an enum"));
+      return;
+    }
+    for (size_t i = 0; i < d->options.size(); ++i)
+      leaf(Json(d->options[i]), at, "$" + name + " == \"" + d->options[i] + "\"");
+  } else if (it->is_object()) {
+    read_choice(*it, at, "", g, leaf);
+  } else {
+    leaf(*it, at, "");
+  }
+  // A fixed format needs no choosing: the one case that always holds.
+  if (r.format_choices.size() == 1 && r.format_choices[0].when.empty()) {
+    r.format = r.format_choices[0].format;
+    r.format_choices.clear();
+  } else if (!r.format_choices.empty()) {
+    r.format = r.format_choices[0].format;
+  }
 }
 
 // Parameters first (choices and `applies` look them up), then templates (passes extend them).

@@ -95,6 +95,7 @@ class GraphReader {
   // graph_json_choices.cpp
   void read_choice(const Json& j, const std::string& ptr, const std::string& when, const GraphDesc& g,
                    const ChoiceLeaf& leaf);
+  void read_format(const Json& j, const std::string& ptr, const GraphDesc& g, ResourceDecl& r);
   std::optional<std::string> case_condition(const std::string& param, const std::string& value,
                                             const std::string& ptr, const GraphDesc& g);
 

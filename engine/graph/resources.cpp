@@ -31,6 +31,8 @@ constexpr FormatFacts kFormats[kFormatCount] = {
     {Format::RG16_SNORM, "RG16_SNORM", 4, 2, "rg16_snorm"},
     {Format::RGB10A2, "RGB10A2", 4, 4, "rgb10_a2"},
     {Format::R11G11B10F, "R11G11B10F", 4, 3, "r11f_g11f_b10f"},
+    {Format::RGBA16, "RGBA16", 8, 4, "rgba16"},
+    {Format::RGBA16_SNORM, "RGBA16_SNORM", 8, 4, "rgba16_snorm"},
 };
 constexpr bool listed_in_enum_order() {
   for (int i = 0; i < kFormatCount; ++i)

@@ -4,18 +4,19 @@
 #include <cstdint>
 #include <optional>
 #include <utility>
+#include <vector>
 #include <string>
 #include <string_view>
 
 namespace penumbra::graph {
 
 // The one list of texture formats; engine/gl/texture_format.cpp adds each one's GL enums.
-// R16/RG16 are unsigned normalised, *_SNORM signed normalised (both read as floats).
+// R16/RG16/RGBA16 are unsigned normalised, *_SNORM signed normalised (both read as floats).
 enum class Format {
   R8, R16F, R32F, RG16F, RG32F, RGBA8, RGBA16F, RGBA32F, DEPTH32F,
-  R16, RG16, R16_SNORM, RG16_SNORM, RGB10A2, R11G11B10F
+  R16, RG16, R16_SNORM, RG16_SNORM, RGB10A2, R11G11B10F, RGBA16, RGBA16_SNORM
 };
-inline constexpr int kFormatCount = 15;
+inline constexpr int kFormatCount = 17;
 
 const char* format_name(Format format);
 std::optional<Format> parse_format(std::string_view name);
@@ -81,15 +82,23 @@ inline constexpr int kMinTileSize = 4, kMaxTileSize = 32;  // pixels, a power of
 bool valid_tile_size(int pixels);
 std::uint64_t tile_list_bytes(int tiles_x, int tiles_y);
 
+// A format chosen by structural parameters: `format` applies where `when` holds (the condition
+// language of graph/condition.h), the first that holds wins.
+struct FormatChoice {
+  std::string when;
+  Format format = Format::RGBA8;
+};
+
 struct ResourceDecl {
   std::string name;
   ResourceKind kind = ResourceKind::texture;
-  Format format = Format::RGBA8;  // texture, persistent
+  Format format = Format::RGBA8;  // texture, persistent; with format_choices, set per compile
   SizeExpr size;                  // texture, persistent; a tile list's tiled area / tile edge
   std::uint64_t bytes = 0;        // buffer (not a tile list)
   std::string location;           // JSON pointer of the declaration ("" from C++)
   bool tile_list = false;         // buffer: a tile list sized by `size`
   bool per_tile = false;          // texture: one texel per tile of `size` (a tiled area / tile edge, rounded up)
+  std::vector<FormatChoice> format_choices;  // empty: `format` is fixed
 };
 
 }  // namespace penumbra::graph

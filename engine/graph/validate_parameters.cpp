@@ -6,6 +6,7 @@
 #include <set>
 
 #include "graph/compile_state.h"
+#include "graph/condition.h"
 
 namespace penumbra::graph::detail {
 
@@ -30,8 +31,12 @@ std::set<std::string, std::less<>> reached_parameters(const CompileState& s) {
       if (!b.reference.empty()) reached.insert(b.reference);
     }
   }
-  for (const ResourceDecl& r : s.graph.resources)
+  for (const ResourceDecl& r : s.graph.resources) {
     if (!r.size.divisor_reference.empty()) reached.insert(r.size.divisor_reference);
+    for (const FormatChoice& c : r.format_choices)
+      if (Result<Condition> parsed = Condition::parse(c.when))
+        reached.insert(parsed->references().begin(), parsed->references().end());
+  }
   for (const ParamExposure& e : s.graph.exposures) reached.insert(e.parameter);
   return reached;
 }

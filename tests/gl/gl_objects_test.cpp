@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
@@ -20,13 +21,17 @@ class GlObjects : public ::testing::Test {
 };
 
 TEST_F(GlObjects, EveryFormatClearsAndReadsBack) {
-  for (Format f : {Format::R8, Format::R16F, Format::R32F, Format::RG16F, Format::RG32F, Format::RGBA8,
-                   Format::RGBA16F, Format::RGBA32F, Format::DEPTH32F}) {
+  for (int i = 0; i < graph::kFormatCount; ++i) {
+    const auto f = static_cast<Format>(i);
     gl::Texture t(f, 8, 4);
     t.clear(0.5f);
     std::vector<float> v = t.read();
     ASSERT_EQ(v.size(), 8u * 4u * t.info().channels) << t.info().name;
-    for (float x : v) EXPECT_NEAR(x, 0.5f, 1.0f / 255.0f) << t.info().name;
+    for (size_t k = 0; k < v.size(); ++k) {
+      // RGB10A2's alpha has 2 bits: 0.5 lies halfway between 1/3 and 2/3.
+      const bool two_bits = f == Format::RGB10A2 && k % 4 == 3;
+      EXPECT_NEAR(v[k], 0.5f, two_bits ? 1.0f / 6.0f + 1e-6f : 1.0f / 255.0f) << t.info().name;
+    }
   }
 }
 
@@ -50,6 +55,33 @@ TEST_F(GlObjects, ComputeShaderWritesExactValuesToAnImage) {
   std::vector<float> v = target.read();
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) ASSERT_EQ(v[y * 16 + x], (x + 100 * y) * 0.5f) << x << "," << y;
+}
+
+// The 16-bit normalised four-channel formats through image stores with their GLSL qualifiers:
+// signed values survive in RGBA16_SNORM, and both keep 16 bits (a step of 1/32767 or 1/65535).
+TEST_F(GlObjects, SixteenBitNormalisedImagesKeepTheirRangeAndPrecision) {
+  for (Format f : {Format::RGBA16, Format::RGBA16_SNORM}) {
+    const bool snorm = f == Format::RGBA16_SNORM;
+    auto program = gl::build_compute_from_text(std::string(R"(#version 450 core
+      layout(local_size_x = 1) in;
+      layout()") + graph::image_format_qualifier(f) + R"(, binding = 0) uniform writeonly image2D dst;
+      uniform vec4 value;
+      void main() { imageStore(dst, ivec2(0), value); })");
+    ASSERT_TRUE(program) << program.error().to_string();
+    gl::Texture target(f, 1, 1);
+    const glm::vec4 value = snorm ? glm::vec4(-1.0f, -0.25f, 1.0f / 32767.0f, 0.75f)
+                                  : glm::vec4(0.0f, 0.25f, 1.0f / 65535.0f, 1.0f);
+    program->set("value", value);
+    glUseProgram(program->id());
+    glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.info().internal_format);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    const std::vector<float> v = target.read();
+    ASSERT_EQ(v.size(), 4u);
+    const float half_step = 0.5f / (snorm ? 32767.0f : 65535.0f);
+    for (int c = 0; c < 4; ++c)
+      EXPECT_NEAR(v[static_cast<size_t>(c)], value[c], half_step + 1e-7f) << target.info().name << " " << c;
+  }
 }
 
 TEST_F(GlObjects, RasterPassWritesColourAndDepth) {

@@ -207,5 +207,61 @@ TEST(GraphBinding, SizeDividedByAParameterFollowsItsValue) {
   error_with(missing.errors, GraphErrorCode::unknown_param_reference);
 }
 
+// A texture's format chosen by a structural parameter: "$param" (an enum whose options are format
+// names) or a choice of names. The chosen format is the one validated and planned.
+std::string format_graph(const std::string& params, const std::string& format) {
+  return R"({"name": "t", "parameters": [)" + params + R"(],
+  "resources": {
+    "scene": {"kind": "imported"}, "camera": {"kind": "imported"},
+    "depth": {"kind": "texture", "format": "DEPTH32F", "size": "screen"},
+    "blocker": {"kind": "texture", "format": "R16F", "size": "screen"},
+    "mask": {"kind": "texture", "format": )" + format + R"(, "size": "screen"}
+  },
+  "passes": [
+    {"type": "depth_prepass", "name": "camera_depth", "slots": {"scene": "scene", "camera": "camera", "depth": "depth"}},
+    {"type": "blocker_search", "name": "search", "slots": {"shadow_map": "depth", "depth": "depth", "blocker": "blocker"}},
+    {"type": "blur", "name": "b", "slots": {"input": "blocker", "output": "mask"}}
+  ],
+  "outputs": ["mask"]})";
+}
+
+TEST(GraphBinding, AFormatChosenByAParameterIsTheOneValidatedAndPlanned) {
+  const std::string fmt =
+      R"({"name": "fmt", "type": "enum", "default": "R16F", "options": ["R16F", "RGBA16F", "R32F"], "structural": true})";
+  auto format_of = [](const Compiled& c) { return c.plan->physical.at(c.plan->physical_for("mask")).format; };
+  auto half = compile_text(format_graph(fmt, R"("$fmt")"));
+  ASSERT_TRUE(half.plan) << all_messages(half.errors);
+  EXPECT_EQ(format_of(half), Format::R16F);
+  auto wide = compile_text(format_graph(fmt, R"("$fmt")"), {"fmt=RGBA16F"});
+  ASSERT_TRUE(wide.plan) << all_messages(wide.errors);
+  EXPECT_EQ(format_of(wide), Format::RGBA16F);
+  // blur's output takes R8, R16F or RGBA16F: the chosen R32F is refused where it is bound.
+  auto refused = compile_text(format_graph(fmt, R"("$fmt")"), {"fmt=R32F"});
+  EXPECT_NE(error_with(refused.errors, GraphErrorCode::format_not_accepted).message.find("format R32F"), std::string::npos);
+
+  const std::string precision =
+      R"({"name": "precision", "type": "enum", "default": "half", "options": ["half", "low"], "structural": true})";
+  const std::string choice = R"({"switch": "$precision", "cases": {"half": "R16F", "low": "R8"}})";
+  auto low = compile_text(format_graph(precision, choice), {"precision=low"});
+  ASSERT_TRUE(low.plan) << all_messages(low.errors);
+  EXPECT_EQ(format_of(low), Format::R8);
+}
+
+TEST(GraphBinding, AFormatParameterMustBeAStructuralEnumOfFormatNames) {
+  auto live = compile_text(format_graph(
+      R"({"name": "fmt", "type": "enum", "default": "R16F", "options": ["R16F", "R8"]})", R"("$fmt")"));
+  EXPECT_EQ(error_with(live.errors, GraphErrorCode::param_not_structural).where, "/resources/mask/format");
+  auto typo = compile_text(format_graph(
+      R"({"name": "fmt", "type": "enum", "default": "R16F", "options": ["R16F", "R61F"], "structural": true})", R"("$fmt")"));
+  const GraphError& unknown = error_with(typo.errors, GraphErrorCode::wrong_json_type);
+  EXPECT_EQ(unknown.where, "/resources/mask/format");
+  EXPECT_NE(unknown.message.find("unknown format \"R61F\""), std::string::npos) << unknown.message;
+  auto number = compile_text(format_graph(
+      R"({"name": "n", "type": "int", "default": 1, "min": 1, "max": 2, "structural": true})", R"("$n")"));
+  EXPECT_NE(error_with(number.errors, GraphErrorCode::param_wrong_type).message.find("it is not an enum"), std::string::npos);
+  auto missing = compile_text(format_graph(kDiv, R"("$nope")"));
+  error_with(missing.errors, GraphErrorCode::unknown_param_reference);
+}
+
 }  // namespace
 }  // namespace penumbra::graph
