@@ -136,10 +136,11 @@ static Result<std::vector<glm::vec<N, float>>> read_floats(const tinygltf::Model
                                           "; FLOAT, or with KHR_mesh_quantization BYTE, UNSIGNED_BYTE, SHORT or "
                                           "UNSIGNED_SHORT, are allowed");
   // KHR_mesh_quantization: normals are normalized BYTE or SHORT, never raw integers.
-  if (kind == AttributeKind::normal && integer &&
+  if ((kind == AttributeKind::normal || kind == AttributeKind::rotation) && integer &&
       (!v->normalized || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
-    return accessor_error(file, what, id + " is an integer NORMAL that is not normalized BYTE or SHORT "
-                                          "(KHR_mesh_quantization)");
+    return accessor_error(file, what, id + " holds integers that are not normalized BYTE or SHORT (the only "
+                                          "integer forms of a normal or a rotation: KHR_mesh_quantization, "
+                                          "EXT_mesh_gpu_instancing)");
   const size_t csize = t == TINYGLTF_COMPONENT_TYPE_FLOAT ? 4 : (t == TINYGLTF_COMPONENT_TYPE_SHORT ||
                                                                  t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) ? 2 : 1;
   std::vector<glm::vec<N, float>> out(v->count);
@@ -160,6 +161,11 @@ static Result<std::vector<glm::vec<N, float>>> read_floats(const tinygltf::Model
 Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor, AttributeKind kind,
                                          const std::string& file, const std::string& what) {
   return read_floats<3>(model, accessor, kind, file, what);
+}
+
+Result<std::vector<glm::vec4>> read_vec4(const tinygltf::Model& model, int accessor, AttributeKind kind,
+                                         const std::string& file, const std::string& what) {
+  return read_floats<4>(model, accessor, kind, file, what);
 }
 
 Result<std::vector<glm::vec2>> read_uv(const tinygltf::Model& model, int accessor, const std::string& file,

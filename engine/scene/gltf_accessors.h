@@ -35,8 +35,11 @@ Result<AccessorView> view_accessor(const tinygltf::Model& model, int accessor, c
 // Attributes are FLOAT or, as KHR_mesh_quantization allows, BYTE / UNSIGNED_BYTE / SHORT /
 // UNSIGNED_SHORT, normalized or not (normals: normalized BYTE or SHORT only), dequantized to
 // float; every value must be finite.
-enum class AttributeKind { position, normal, texcoord };
+// (rotation: EXT_mesh_gpu_instancing's quaternions, the same rule as normals.)
+enum class AttributeKind { position, normal, texcoord, rotation };
 Result<std::vector<glm::vec3>> read_vec3(const tinygltf::Model& model, int accessor, AttributeKind kind,
+                                         const std::string& file, const std::string& what);
+Result<std::vector<glm::vec4>> read_vec4(const tinygltf::Model& model, int accessor, AttributeKind kind,
                                          const std::string& file, const std::string& what);
 Result<std::vector<glm::vec2>> read_uv(const tinygltf::Model& model, int accessor,
                                        const std::string& file, const std::string& what);

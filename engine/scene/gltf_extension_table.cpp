@@ -23,6 +23,8 @@ constexpr GltfExtension kExtensions[] = {
     {"EXT_meshopt_compression", supported,
      "meshopt-compressed buffer views (attributes, triangles, indices; octahedral, quaternion and exponential "
      "filters), decoded with libmeshoptimizer; fallback buffers need no data"},
+    {"EXT_mesh_gpu_instancing", supported,
+     "a node's mesh drawn once per instance (TRANSLATION, ROTATION, SCALE), every instance a caster"},
     {"KHR_materials_clearcoat", ignored, "shading only: a coat changes reflection, not what light reaches a surface"},
     {"KHR_materials_sheen", ignored, "shading only"},
     {"KHR_materials_specular", ignored, "shading only"},
@@ -47,8 +49,6 @@ constexpr GltfExtension kExtensions[] = {
      "fallback is refused (its mask would be lost)"},
     {"EXT_texture_webp", ignored, "as KHR_texture_basisu"},
     {"EXT_texture_avif", ignored, "as KHR_texture_basisu"},
-    {"EXT_mesh_gpu_instancing", refused,
-     "its instances are casters: ignoring it would draw one copy of the mesh and lose the other shadows"},
     {"KHR_materials_pbrSpecularGlossiness", refused,
      "its diffuse texture and factor carry the alpha an alpha-tested material is cut by (archived)"},
     {"KHR_techniques_webgl", refused, "custom shaders may move vertices or discard fragments (archived)"},

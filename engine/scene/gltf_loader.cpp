@@ -20,6 +20,7 @@
 #include "scene/gltf_draco.h"
 #include "scene/gltf_extension_data.h"
 #include "scene/gltf_extension_table.h"
+#include "scene/gltf_instancing.h"
 #include "scene/gltf_meshopt.h"
 #include "scene/gltf_spec_checks.h"
 #include "util/file_read.h"
@@ -387,9 +388,18 @@ Result<Scene> load_gltf(const std::string& path) {
         if (!std::isfinite(world[c][r]))
           return file_error(path, "transform is not finite (NaN or infinity)",
                             "node " + std::to_string(ni) + " '" + shortened(node.name) + "'");
-    if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < model.meshes.size())
-      for (size_t k = 0; k < count[static_cast<size_t>(node.mesh)]; ++k)
-        scene.instances.push_back({static_cast<uint32_t>(first[static_cast<size_t>(node.mesh)] + k), world});
+    if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < model.meshes.size()) {
+      const std::string where = "node " + std::to_string(ni) + " '" + shortened(node.name) + "'";
+      auto instances = gltf::node_instances(model, node, path, where);
+      if (!instances) return instances.error();
+      const std::vector<glm::mat4> placements = *instances ? **instances : std::vector<glm::mat4>{glm::mat4(1.0f)};
+      if (*instances && scene.instances.size() + placements.size() * count[static_cast<size_t>(node.mesh)] > kMaxInstances)
+        return file_error(path, "its instances take the scene past " + std::to_string(kMaxInstances) +
+                                    " mesh instances (EXT_mesh_gpu_instancing)", where);
+      for (const glm::mat4& placement : placements)
+        for (size_t k = 0; k < count[static_cast<size_t>(node.mesh)]; ++k)
+          scene.instances.push_back({static_cast<uint32_t>(first[static_cast<size_t>(node.mesh)] + k), world * placement});
+    }
     if (const int light = node_light(node); light >= 0 || node.extensions.count("KHR_lights_punctual")) {
       Result<SceneLight> l = convert_light(model, light, world, path, "node " + std::to_string(ni) + " '" + node.name + "'");
       if (!l) return l.error();

@@ -529,13 +529,54 @@ TEST(GltfExtensions, RequiredOnesAreDecodedIgnoredWithAWarningOrRefusedWithTheRe
   };
   EXPECT_TRUE(with_required("KHR_materials_clearcoat"));  // shading only
   EXPECT_TRUE(with_required("KHR_texture_transform"));
-  Result<scene::Scene> refused = with_required("EXT_mesh_gpu_instancing");
+  Result<scene::Scene> refused = with_required("KHR_materials_pbrSpecularGlossiness");
   ASSERT_FALSE(refused);
-  EXPECT_NE(refused.error().message.find("which Penumbra refuses: its instances are casters"), std::string::npos)
-      << refused.error().message;
+  EXPECT_NE(refused.error().message.find("which Penumbra refuses: its diffuse texture and factor carry the alpha"),
+            std::string::npos) << refused.error().message;
   Result<scene::Scene> unknown = with_required("VENDOR_made_up");
   ASSERT_FALSE(unknown);
   EXPECT_NE(unknown.error().message.find("does not know"), std::string::npos) << unknown.error().message;
+}
+
+// EXT_mesh_gpu_instancing: each instance is the node's transform times its own translation,
+// rotation (here normalized SHORT quaternions) and scale; every instance is in the scene.
+TEST(GltfInstancing, EveryInstanceIsPlacedAndCasts) {
+  const fs::path dir = test::fresh_temp_dir("gltf_instancing");
+  GlbWriter w;
+  add_plain_mesh(w, caster());
+  const float t[] = {0, 0, 0, 3, 0, 0, 0, 0, -4};
+  const int16_t r[] = {0, 0, 0, 32767, 0, 23170, 0, 23170, 0, 0, 0, 32767};  // identity, 90 deg about +Y, identity
+  const float sc[] = {1, 1, 1, 1, 1, 1, 2, 2, 2};
+  const int tv = w.accessor({{"bufferView", w.view(t, sizeof t)}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  const int rv = w.accessor({{"bufferView", w.view(r, sizeof r)}, {"componentType", 5122}, {"normalized", true},
+                             {"count", 3}, {"type", "VEC4"}});
+  const int sv = w.accessor({{"bufferView", w.view(sc, sizeof sc)}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
+  w.scene_of_meshes();
+  w.json["nodes"][0]["translation"] = {0, 0.5, 0};
+  w.json["nodes"][0]["extensions"] = {
+      {"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", tv}, {"ROTATION", rv}, {"SCALE", sv}}}}}};
+  w.json["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+  w.json["extensionsRequired"] = {"EXT_mesh_gpu_instancing"};
+  w.write(dir / "i.glb");
+  const scene::Scene s = load(dir / "i.glb");
+  ASSERT_EQ(s.instances.size(), 3u);
+  auto place = [&](size_t i, glm::vec3 p) { return glm::vec3(s.instances[i].world * glm::vec4(p, 1.0f)); };
+  EXPECT_LT(glm::length(place(0, {1, 0, 0}) - glm::vec3(1, 0.5f, 0)), 1e-5f);
+  EXPECT_LT(glm::length(place(1, {1, 0, 0}) - glm::vec3(3, 0.5f, -1)), 1e-4f);  // +X turned to -Z, then moved
+  EXPECT_LT(glm::length(place(2, {1, 0, 0}) - glm::vec3(2, 0.5f, -4)), 1e-5f);  // doubled, then moved
+
+  // Attributes of different counts, and a rotation stored as raw integers, are refused by name.
+  w.json["accessors"][static_cast<size_t>(sv)]["count"] = 2;
+  w.write(dir / "counts.glb");
+  std::string e = error_of(dir / "counts.glb");
+  EXPECT_NE(e.find("node 0 '': its attributes have different counts (3, 3, 2) (EXT_mesh_gpu_instancing)"),
+            std::string::npos) << e;
+  w.json["accessors"][static_cast<size_t>(sv)]["count"] = 3;
+  w.json["accessors"][static_cast<size_t>(rv)]["normalized"] = false;
+  w.write(dir / "raw.glb");
+  e = error_of(dir / "raw.glb");
+  EXPECT_NE(e.find("node 0 '' ROTATION"), std::string::npos) << e;
+  EXPECT_NE(e.find("not normalized BYTE or SHORT"), std::string::npos) << e;
 }
 
 TEST(GltfExtensions, AnAlphaMaskWithoutAPngOrJpegImageIsRefused) {
