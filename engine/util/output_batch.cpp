@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "util/file_write.h"
+#include "util/interrupted_outputs.h"
 
 namespace penumbra {
 
@@ -32,7 +33,10 @@ Status OutputBatch::create_directory(const std::string& dir) {
   }
   fs::create_directories(dir, ec);
   for (auto it = missing.rbegin(); it != missing.rend(); ++it)
-    if (fs::is_directory(*it)) created_dirs_.push_back(it->string());
+    if (fs::is_directory(*it)) {
+      created_dirs_.push_back(it->string());
+      interrupted_handles_.push_back(interrupted_outputs::remember_directory(it->string()));
+    }
   if (ec || !fs::is_directory(dir, ec)) {
     Error e = make_error(fs::exists(dir, ec) ? "is not a directory" : "cannot create the output directory");
     e.file = dir;
@@ -45,6 +49,7 @@ Result<std::string> OutputBatch::staged(const std::string& path) {
   if (Status s = check_output_path(path); !s) return s.error();
   std::string tmp = path + ".pending";
   staged_.emplace_back(tmp, path);
+  interrupted_handles_.push_back(interrupted_outputs::remember_file(tmp));
   return tmp;
 }
 
@@ -65,7 +70,13 @@ Status OutputBatch::commit() {
     }
   }
   committed_ = true;
+  forget_interrupted();
   return {};
+}
+
+void OutputBatch::forget_interrupted() {
+  for (int handle : interrupted_handles_) interrupted_outputs::forget(handle);
+  interrupted_handles_.clear();
 }
 
 Error OutputBatch::not_written(Error e) const {
@@ -83,6 +94,7 @@ void OutputBatch::discard() {
   for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it)
     if (fs::is_empty(*it, ec)) fs::remove(*it, ec);  // innermost first; a folder holding user files stays
   created_dirs_.clear();
+  forget_interrupted();
 }
 
 }  // namespace penumbra

@@ -3,7 +3,8 @@
 // temporary beside its final path; commit() moves them all into place once every one was
 // written. A batch destroyed without commit (a later output failed, a render failed) removes
 // its temporaries and the folders it created, so a failed run leaves nothing behind and never
-// half of a set of files that belong together (eval's heat maps, masks and report).
+// half of a set of files that belong together (eval's heat maps, masks and report). A run stopped
+// by SIGINT, SIGTERM or SIGHUP removes them too (util/interrupted_outputs.h).
 //
 //   OutputBatch out;
 //   if (Status s = out.create_directory(dir); !s) return s;
@@ -35,8 +36,11 @@ class OutputBatch {
  private:
   void discard();
 
+  void forget_interrupted();
+
   std::vector<std::pair<std::string, std::string>> staged_;  // temporary, final path
   std::vector<std::string> created_dirs_;                    // outermost first
+  std::vector<int> interrupted_handles_;                     // util/interrupted_outputs.h
   bool committed_ = false;
 };
 

@@ -119,6 +119,22 @@ TEST(TechniquesCommand, AGraphThatDoesNotCompileIsListedAsBrokenWithItsErrors) {
   for (const nlohmann::json& t : nlohmann::json::parse(shipped.output)) EXPECT_TRUE(t["graph_errors"].empty()) << t["name"];
 }
 
+// A run stopped by SIGTERM (or Ctrl+C) while its outputs are staged leaves none of them, nor the
+// folder it made for them: --all-techniques stages every picture until the last is rendered.
+TEST(RenderCommand, AStoppedRunLeavesNoHalfWrittenOutputs) {
+  const std::filesystem::path dir = fresh_temp_dir("render_stopped");
+  const std::string out = (dir / "out").string();
+  const std::string script =
+      std::string(PENUMBRA_CLI) + " render --context osmesa --scene ball --size 64x48 --shadow-size 512 --all-techniques" +
+      " --out-dir " + shell_quote(out) + " >/dev/null 2>&1 & pid=$!; " +
+      "for i in $(seq 1 600); do ls " + shell_quote(out) + "/*.pending >/dev/null 2>&1 && break; sleep 0.05; done; " +
+      "ls " + shell_quote(out) + "/*.pending >/dev/null 2>&1 && echo staged; kill -TERM $pid; wait $pid; echo status=$?";
+  CommandRun r = run_command("sh -c " + shell_quote(script));
+  ASSERT_NE(r.output.find("staged"), std::string::npos) << r.output;  // stopped while outputs were staged
+  EXPECT_NE(r.output.find("status=143"), std::string::npos) << r.output;  // ended by the signal itself
+  EXPECT_FALSE(std::filesystem::exists(out)) << "left behind: " << out;
+}
+
 TEST(RenderCommand, BadSetValuesExitTwoWithTheValidRange) {
   const std::string base = "render --context osmesa --scene ball --size 32x32 --mask /dev/null --technique ";
   CommandRun range = run_cli(base + "pcss --set blocker_samples=100");
