@@ -6,13 +6,17 @@ namespace penumbra::sandbox {
 
 std::vector<InputEvent> InputQueue::take_frame() {
   std::vector<InputEvent> out;
-  std::vector<int> pressed;  // keys pressed in this frame's events
+  std::vector<int> pressed, released;  // keys pressed / released in this frame's events
+  auto in = [](const std::vector<int>& keys, int key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); };
   while (!pending_.empty()) {
     const InputEvent& e = pending_.front();
     if (e.kind == InputEvent::Kind::key) {
-      const bool was_pressed = std::find(pressed.begin(), pressed.end(), e.key) != pressed.end();
-      if (e.action == InputEvent::kRelease && was_pressed) break;  // keep the tap down for this frame
+      if (e.action == InputEvent::kRelease && in(pressed, e.key)) break;  // keep the tap down for this frame
+      // A new press of a key released this frame would leave it down at both samples, its
+      // press unseen (two BackSpaces deleted one character): it waits for the next frame.
+      if (e.action == InputEvent::kPress && in(released, e.key)) break;
       if (e.action == InputEvent::kPress) pressed.push_back(e.key);
+      if (e.action == InputEvent::kRelease) released.push_back(e.key);
     }
     out.push_back(e);
     pending_.pop_front();

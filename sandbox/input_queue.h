@@ -3,7 +3,8 @@
 // (GL-free, unit-tested). Dear ImGui 1.86 samples key state once per frame, so a key pressed
 // and released between two frames (a tap at a low frame rate, or Ctrl+A typed quickly) was
 // never seen down. The queue hands each frame the events up to the release of a key pressed in
-// that same frame; the release and everything after it wait for the next frame. Characters
+// that same frame; the release and everything after it wait for the next frame, and so does a
+// new press of a key released in the frame (else it would look held, not pressed). Characters
 // stay in order with the keys, so "Ctrl+A, then type" replaces the selection.
 #include <deque>
 #include <vector>

@@ -46,6 +46,7 @@ Status write_ui_state(const std::string& path, SandboxController& c, const UiSta
   j["tooltip"] = rect(ui.probe.tooltip);
   j["keys"] = ui.probe.keys;
   j["texts"] = ui.probe.texts;
+  j["active"] = ui.probe.active;
   j["fields"] = {{"preset name", ui.preset_name}, {"glTF", ui.scene_path}, {"screenshot path", ui.screenshot_path},
                  {"metrics file", ui.metrics_path}, {"into", ui.sequence_dir}, {"save to", ui.save_dir},
                  {"frames", std::to_string(ui.sequence.frames)}};

@@ -13,6 +13,7 @@ UiProbe::Rect rect_of(ImVec2 min, ImVec2 max) { return {min.x, min.y, max.x - mi
 
 void probe_item(UiProbe& probe, const std::string& id) {
   probe.items[id] = rect_of(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+  if (ImGui::IsItemActive()) probe.active = id;
 }
 
 bool begin_combo(UiProbe& probe, const char* label, const char* preview, int flags) {

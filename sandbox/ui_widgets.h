@@ -25,8 +25,10 @@ struct UiProbe {
   std::optional<Rect> popup, tooltip;  // the open combo list's and the tooltip's windows
   std::map<std::string, int> keys;     // shortcut keys acted on: "space", "f12", "escape"
   std::map<std::string, std::string> texts;  // readouts drawn over the view this frame ("penumbra")
+  std::string active;                  // the probed widget being edited or held this frame ("" none)
   void begin_frame() {
     texts.clear();
+    active.clear();
     open_popup.clear();
     popup.reset();
     tooltip.reset();

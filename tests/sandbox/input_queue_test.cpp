@@ -43,7 +43,10 @@ TEST(InputQueue, TwoTapsOfOneKeyTakeTwoFramesEach) {
     ++frames;
   }
   EXPECT_EQ(frames_with_a_press, 2);
-  EXPECT_EQ(frames, 3);  // press | release, press | release
+  // press | release | press | release: ImGui samples key state once a frame, so a release and a
+  // new press in one frame would leave the key down at both samples and the second press unseen
+  // (two BackSpaces in a row deleted one character).
+  EXPECT_EQ(frames, 4);
 }
 
 TEST(InputQueue, CharactersAndHeldKeysPassInOneFrame) {

@@ -81,8 +81,7 @@ TEST(SandboxXInput, KeyTapsAtFourFramesPerSecondAllArrive) {
 // typing replaces the field's text.
 TEST(SandboxXInput, CtrlAThenTypingReplacesAFieldAtFourFramesPerSecond) {
   auto sb = start("ctrl_a", kArgs + " --technique hard --max-fps 4");
-  sb->click("preset name");
-  sb->settle(3);
+  sb->focus("preset name");
   sb->key("ctrl+a");
   sb->xdo("type --delay 40 soft-look");
   // A character a frame at most (a key's release waits for the next frame): give it 40.
@@ -209,8 +208,7 @@ TEST(SandboxXInput, PresetMenuLoadsWithOneClickAndListsSavedOnes) {
   sb->click("preset/paper");
   const json& loaded = sb->settle(4);
   EXPECT_EQ(loaded["params"]["shadow_filter_max_size"], "0.002") << loaded["message"];
-  sb->click("preset name");
-  sb->settle(3);
+  sb->focus("preset name");
   sb->key("ctrl+a");
   sb->xdo("type --delay 20 narrow");
   ASSERT_TRUE(sb->within(40, [](const json& s) { return s["fields"]["preset name"] == "narrow"; }))
@@ -410,14 +408,10 @@ TEST(SandboxXInput, RecordingFramesFromThePanelWritesNumberedImages) {
   fs::create_directories(seq);
   sb->click("Record frames");
   sb->settle(3);
-  sb->click("into");
-  sb->settle(3);
-  sb->key("ctrl+a");
+  sb->clear_field("into", sb->state()["fields"]["into"].get<std::string>().size());
   sb->xdo("type --delay 10 '" + seq.string() + "'");
   ASSERT_TRUE(sb->within(200, [&](const json& s) { return s["fields"]["into"] == seq.string(); })) << sb->state()["fields"];
-  sb->click("frames");
-  sb->settle(3);
-  sb->key("ctrl+a");
+  sb->clear_field("frames", sb->state()["fields"]["frames"].get<std::string>().size());
   sb->xdo("type 3");
   ASSERT_TRUE(sb->within(60, [&](const json& s) { return s["fields"]["frames"] == "3"; })) << sb->state()["fields"];
   sb->click("record");
