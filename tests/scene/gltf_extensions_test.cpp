@@ -183,15 +183,20 @@ struct MeshoptTwin {
   }
 };
 
-// The caster's shadow on a ground plane, ray traced (CPU), seen from above and in front.
-metrics::MaskImage traced_shadow(scene::Scene s) {
+// The loaded scene with an 8 x 8 ground at y = 0 (the loader's default material), ready to trace.
+Result<reference::RayScene> on_ground(scene::Scene s) {
   scene::Mesh ground;
   scene::build::add_ground(ground, {0.0f, 0.0f, 0.0f}, 8.0f, 8.0f);
   ground.material = static_cast<uint32_t>(s.materials.size() - 1);
   s.meshes.push_back(ground);
   s.instances.push_back({static_cast<uint32_t>(s.meshes.size() - 1), glm::mat4(1.0f)});
   s.bounds = scene::compute_bounds(s);
-  Result<reference::RayScene> rs = reference::RayScene::build(s);
+  return reference::RayScene::build(s);
+}
+
+// The caster's shadow on a ground plane, ray traced (CPU), seen from above and in front.
+metrics::MaskImage traced_shadow(scene::Scene s) {
+  Result<reference::RayScene> rs = on_ground(std::move(s));
   EXPECT_TRUE(rs);
   scene::Light light;
   light.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
@@ -264,14 +269,7 @@ GlbWriter masked_quad(const json& texture_info_extensions) {
 
 // Visibility of ground points under the quad's left half (u in 0.2..0.4), light straight down.
 std::vector<float> under_left_half(const scene::Scene& s) {
-  scene::Scene with_ground = s;
-  scene::Mesh ground;
-  scene::build::add_ground(ground, {0.0f, 0.0f, 0.0f}, 8.0f, 8.0f);
-  ground.material = static_cast<uint32_t>(with_ground.materials.size() - 1);
-  with_ground.meshes.push_back(ground);
-  with_ground.instances.push_back({static_cast<uint32_t>(with_ground.meshes.size() - 1), glm::mat4(1.0f)});
-  with_ground.bounds = scene::compute_bounds(with_ground);
-  Result<reference::RayScene> rs = reference::RayScene::build(with_ground);
+  Result<reference::RayScene> rs = on_ground(s);
   EXPECT_TRUE(rs);
   scene::Light light;
   light.direction = {0, -1, 0};
