@@ -9,21 +9,35 @@
 namespace penumbra::reference {
 namespace {
 
-// What the alpha filter needs for one masked geometry; lives as long as the RayScene.
+// The alpha channel of a base-colour texture, copied: the RayScene must not point into the
+// scene it was built from, which the caller may destroy first.
+struct AlphaTexels {
+  int width = 0, height = 0;
+  std::vector<uint8_t> alpha;  // row-major, width * height
+};
+
+// What the alpha filter needs for one masked geometry; owned by the RayScene.
 struct AlphaMaskData {
-  std::vector<glm::vec2> uvs;         // per flattened vertex
-  std::vector<uint32_t> indices;      // per triangle corner
-  const scene::Image* image = nullptr;  // null: the factor's alpha alone decides
+  std::vector<glm::vec2> uvs;     // per flattened vertex
+  std::vector<uint32_t> indices;  // per triangle corner
+  AlphaTexels texels;             // empty: the factor's alpha alone decides
   float factor_alpha = 1.0f;
   float cutoff = 0.5f;
 };
 
-float texture_alpha(const scene::Image& img, glm::vec2 uv) {
+AlphaTexels alpha_of(const scene::Image& img) {
+  AlphaTexels t{img.width, img.height, {}};
+  t.alpha.resize(static_cast<size_t>(img.width) * img.height);
+  for (size_t i = 0; i < t.alpha.size(); ++i) t.alpha[i] = img.pixels[i * 4 + 3];
+  return t;
+}
+
+float texture_alpha(const AlphaTexels& img, glm::vec2 uv) {
   // Nearest texel, repeat wrap (glTF's default sampler).
   const float u = uv.x - std::floor(uv.x), v = uv.y - std::floor(uv.y);
   const int x = std::min(img.width - 1, static_cast<int>(u * static_cast<float>(img.width)));
   const int y = std::min(img.height - 1, static_cast<int>(v * static_cast<float>(img.height)));
-  return img.pixels[(static_cast<size_t>(y) * img.width + x) * 4 + 3] / 255.0f;
+  return img.alpha[static_cast<size_t>(y) * img.width + x] / 255.0f;
 }
 
 // Embree calls this for every candidate hit (closest-hit and any-hit queries alike); clearing
@@ -36,7 +50,7 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
     const float bu = RTCHitN_u(args->hit, args->N, i), bv = RTCHitN_v(args->hit, args->N, i);
     const glm::vec2 uv = (1.0f - bu - bv) * data->uvs[data->indices[prim * 3]] +
                          bu * data->uvs[data->indices[prim * 3 + 1]] + bv * data->uvs[data->indices[prim * 3 + 2]];
-    const float alpha = data->factor_alpha * (data->image ? texture_alpha(*data->image, uv) : 1.0f);
+    const float alpha = data->factor_alpha * (data->texels.alpha.empty() ? 1.0f : texture_alpha(data->texels, uv));
     if (alpha < data->cutoff) args->valid[i] = 0;
   }
 }
@@ -99,7 +113,7 @@ Result<RayScene> RayScene::build(const scene::Scene& s) {
       if (mat->base_color_texture >= 0 && static_cast<size_t>(mat->base_color_texture) < s.images.size()) {
         const scene::Image& img = s.images[static_cast<size_t>(mat->base_color_texture)];
         if (img.width > 0 && img.height > 0 && img.pixels.size() >= static_cast<size_t>(img.width) * img.height * 4)
-          data->image = &img;
+          data->texels = alpha_of(img);
       }
       data->factor_alpha = mat->base_color_factor.a;
       data->cutoff = mat->alpha_cutoff;

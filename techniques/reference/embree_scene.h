@@ -4,7 +4,8 @@
 // occlusion filter that samples the base-colour texture's alpha (times the factor's alpha,
 // nearest texel, repeat wrap) at the hit's interpolated UV and ignores the hit when alpha is
 // below the cutoff. OPAQUE and BLEND materials block light (BLEND surfaces are treated as
-// opaque casters, as the shadow-map techniques do).
+// opaque casters, as the shadow-map techniques do). The RayScene copies what it needs (the
+// texels' alpha included) and keeps no reference to the scene it was built from.
 //
 //   Result<RayScene> rs = RayScene::build(scene);
 //   float t = rs->intersect(origin, dir);          // distance or +inf

@@ -69,6 +69,22 @@ TEST(RaytracedReference, AlphaMaskedQuadCastsOnlyWhereOpaque) {
   }
 }
 
+// A RayScene is a value: changing (or destroying) the scene it was built from afterwards must
+// not change what it traces. The texture is made opaque after the build; the hole must stay.
+TEST(RaytracedReference, TheBuiltSceneKeepsNoReferenceToItsSource) {
+  scene::Scene s = ground_with_blocker(5.0f, 1);
+  s.images.push_back({"mask", 2, 2, std::vector<uint8_t>(16, 0)});
+  s.materials.push_back({.base_color_texture = 0, .alpha_mode = scene::AlphaMode::mask, .alpha_cutoff = 0.5f});
+  Result<reference::RayScene> rs = reference::RayScene::build(s);
+  ASSERT_TRUE(rs);
+  std::fill(s.images[0].pixels.begin(), s.images[0].pixels.end(), uint8_t{255});
+  s.images.clear();
+  s.images.shrink_to_fit();
+  const std::vector<glm::vec3> pts{{0, 0, 0}}, normals{{0, 1, 0}};
+  const metrics::MaskImage v = reference::trace_visibility(*rs, overhead_light(1.0f), pts, normals, 1, 1, {.samples = 64});
+  EXPECT_EQ(v.pixels[0], 1.0f);
+}
+
 // Physics sanity: the lateral penumbra of the ball's shadow widens as the ball rises.
 static float ball_penumbra_width(float ball_height) {
   Result<scene::Scene> s = scene::make_builtin_scene("ball", {{"ball_height", ball_height}});
