@@ -5,6 +5,7 @@
 #include "passes/lighting/lighting_pass.h"
 #include "passes/pcf_mask/pcf_mask_pass.h"
 #include "passes/pcss/pcss_passes.h"
+#include "passes/separable_filter/separable_filter_pass.h"
 #include "passes/shadow_map/shadow_map_pass.h"
 #include "passes/shadow_tiles/shadow_tiles_passes.h"
 #include "passes/visualize/visualize_pass.h"
@@ -21,6 +22,7 @@ void register_shared_passes(exec::PassLibrary& library) {
   library.add(passes::pcss_filter_pass_type());
   library.add(passes::shadow_planes_pass_type());
   library.add(passes::shadow_tiles_pass_type());
+  library.add(passes::separable_filter_pass_type());
   library.add(passes::visualize_pass_type());
 }
 

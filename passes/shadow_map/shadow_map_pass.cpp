@@ -1,4 +1,5 @@
-// The light's depth map (DEPTH32F, raster). Two biases fight shadow acne:
+// The light-view raster passes: the light's depth map (DEPTH32F) and, for a light_view_pass_type(),
+// the colour targets its fragment shader writes. Two biases fight shadow acne:
 //  - slope-scaled constant bias, applied here while rendering: glPolygonOffset(slope_bias,
 //    constant_bias) adds slope_bias * max|dz/dx, dz/dy| + constant_bias * r to each depth,
 //    r being the smallest resolvable depth step. Steep casters get more bias, flat ones less.
@@ -9,6 +10,9 @@
 // (orthographic) light, hyperbolic for a spot light (light_distance() in shadow_common.glsl).
 #include "passes/shadow_map/shadow_map_pass.h"
 
+#include "passes/common/shadow_uniforms.h"
+#include "passes/shadow_map/light_view_pass.h"
+
 #include "exec/gpu_scene.h"
 #include "exec/pass_decl_builder.h"
 #include "gl/framebuffer.h"
@@ -16,43 +20,69 @@
 namespace penumbra::passes {
 namespace {
 
-class ShadowMapPass final : public exec::PassImpl {
+class LightViewPass final : public exec::PassImpl {
  public:
+  explicit LightViewPass(const LightViewPassSpec& spec) : spec_(spec) {
+    for (const LightViewTarget& t : spec.colour_targets) clears_.push_back(t.clear);
+  }
+
   Status execute(exec::PassContext& ctx) override {
-    gl::ShaderProgram& p = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
-                                        .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
+    gl::ShaderProgram& p =
+        ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl", .fragment = spec_.fragment_shader});
     if (!p.valid()) return *p.last_error();
     if (!ctx.frame().shadow.unsupported.empty())
-      return make_error("shadow_map: " + ctx.frame().shadow.unsupported, ErrorKind::bad_input);
+      return make_error(spec_.type_name + ": " + ctx.frame().shadow.unsupported, ErrorKind::bad_input);
     gl::Texture& depth = ctx.texture("depth");
-    if (attached_ != depth.id()) {
+    std::vector<GLuint> attached{depth.id()};
+    for (const LightViewTarget& t : spec_.colour_targets) attached.push_back(ctx.texture(t.slot).id());
+    if (attached_ != attached) {
       fb_ = gl::Framebuffer();
       fb_.attach_depth(depth);
+      for (size_t i = 0; i < spec_.colour_targets.size(); ++i)
+        fb_.attach_color(static_cast<int>(i), ctx.texture(spec_.colour_targets[i].slot));
       if (Status s = fb_.finish(); !s) return s;
-      attached_ = depth.id();
+      attached_ = attached;
     }
-    if (!ctx.frame().scene) {  // nothing casts: the map stays at the far plane
+    if (!ctx.frame().scene) {  // nothing casts: the map stays at the far plane, the targets clear
       depth.clear(1.0f);
+      for (size_t i = 0; i < clears_.size(); ++i)
+        glClearNamedFramebufferfv(fb_.id(), GL_COLOR, static_cast<GLint>(i), &clears_[i][0]);
       return {};
     }
+    set_shadow_uniforms(p.program(), ctx.frame());
     render_depth_map(fb_, p.program(), *ctx.frame().scene, ctx.frame().shadow.view_proj, ctx.real("slope_bias"),
-                     ctx.real("constant_bias"));
+                     ctx.real("constant_bias"), 0, clears_);
     return {};
   }
 
  private:
+  LightViewPassSpec spec_;
+  std::vector<glm::vec4> clears_;
   gl::Framebuffer fb_;
-  GLuint attached_ = 0;
+  std::vector<GLuint> attached_;
 };
+
+std::vector<graph::Format> colour_formats() {
+  std::vector<graph::Format> out;
+  for (int i = 0; i < graph::kFormatCount; ++i)
+    if (!graph::is_depth_format(static_cast<graph::Format>(i))) out.push_back(static_cast<graph::Format>(i));
+  return out;
+}
 
 }  // namespace
 
 void render_depth_map(const gl::Framebuffer& target, const gl::Program& program, const exec::GpuScene& scene,
-                      const glm::mat4& view_proj, float slope_bias, float constant_bias, GLuint texture_unit) {
+                      const glm::mat4& view_proj, float slope_bias, float constant_bias, GLuint texture_unit,
+                      const std::vector<glm::vec4>& colour_clears) {
   target.bind();
   const float one = 1.0f;
   glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
+  for (size_t i = 0; i < colour_clears.size(); ++i)
+    glClearNamedFramebufferfv(target.id(), GL_COLOR, static_cast<GLint>(i), &colour_clears[i][0]);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(slope_bias, constant_bias);
@@ -62,16 +92,25 @@ void render_depth_map(const gl::Framebuffer& target, const gl::Program& program,
   glDisable(GL_DEPTH_TEST);
 }
 
-exec::PassType shadow_map_pass_type() {
-  return exec::PassDeclBuilder("shadow_map")
-      .describe("Light-view depth map with slope-scaled constant bias (raster)")
-      .imported("scene")
-      .imported("light")
-      .depth_out("depth")
-      .real("slope_bias", 1.5, 0.0, 10.0, "", "glPolygonOffset factor: depth bias per unit of depth slope")
+exec::PassType light_view_pass_type(LightViewPassSpec spec) {
+  exec::PassDeclBuilder b(spec.type_name);
+  b.describe(spec.description).imported("scene").imported("light").depth_out("depth");
+  for (const LightViewTarget& t : spec.colour_targets) b.color_out(t.slot, t.formats.empty() ? colour_formats() : t.formats);
+  std::vector<std::string> same{"depth"};
+  for (const LightViewTarget& t : spec.colour_targets) same.push_back(t.slot);
+  if (same.size() > 1) b.same_size(same);
+  b.real("slope_bias", 1.5, 0.0, 10.0, "", "glPolygonOffset factor: depth bias per unit of depth slope")
       .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps",
-            "glPolygonOffset units: constant bias in smallest depth steps")
-      .build<ShadowMapPass>();
+            "glPolygonOffset units: constant bias in smallest depth steps");
+  exec::PassType type{b.decl(), nullptr};
+  type.create = [spec = std::move(spec)] { return std::make_unique<LightViewPass>(spec); };
+  return type;
+}
+
+exec::PassType shadow_map_pass_type() {
+  return light_view_pass_type({.type_name = "shadow_map",
+                               .description = "Light-view depth map with slope-scaled constant bias (raster)",
+                               .fragment_shader = "passes/shadow_map/shadow_map.frag.glsl"});
 }
 
 }  // namespace penumbra::passes

@@ -10,7 +10,6 @@ namespace penumbra::pmchss {
 namespace {
 void register_passes(exec::PassLibrary& library) {
   library.add(penumbra_mask_pass_type());
-  library.add(separable_filter_pass_type());
   library.add(min_downsample_pass_type());
   library.add(shadow_mask_pass_type());
   library.add(checker_upsample_pass_type());
