@@ -21,6 +21,7 @@
 // discard_uncovered() first), gl_FragCoord.z (the light's window depth before the polygon
 // offset, the value the depth map stores less its bias) and shadow_common.glsl's uniforms
 // (set_shadow_uniforms), e.g. light_distance(gl_FragCoord.z).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct LightViewPassSpec {
   std::string description;
   std::string fragment_shader;  // shader path (a plugin's: relative to its directory)
   std::vector<LightViewTarget> colour_targets;
+  // The pass's parameters besides slope_bias and constant_bias (graph/parameters.h's makers).
+  std::vector<graph::ParamDesc> params;
+  // Sets the fragment shader's own uniforms each frame, before the casters are drawn.
+  std::function<void(exec::PassContext&, const gl::Program&)> set_uniforms;
 };
 
 exec::PassType light_view_pass_type(LightViewPassSpec spec);

@@ -50,6 +50,7 @@ class LightViewPass final : public exec::PassImpl {
       return {};
     }
     set_shadow_uniforms(p.program(), ctx.frame());
+    if (spec_.set_uniforms) spec_.set_uniforms(ctx, p.program());
     render_depth_map(fb_, p.program(), *ctx.frame().scene, ctx.frame().shadow.view_proj, ctx.real("slope_bias"),
                      ctx.real("constant_bias"), 0, clears_);
     return {};
@@ -102,6 +103,7 @@ exec::PassType light_view_pass_type(LightViewPassSpec spec) {
   b.real("slope_bias", 1.5, 0.0, 10.0, "", "glPolygonOffset factor: depth bias per unit of depth slope")
       .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps",
             "glPolygonOffset units: constant bias in smallest depth steps");
+  for (const graph::ParamDesc& param : spec.params) b.param(param);
   exec::PassType type{b.decl(), nullptr};
   type.create = [spec = std::move(spec)] { return std::make_unique<LightViewPass>(spec); };
   return type;

@@ -9,9 +9,12 @@
 # Layout under the prefix:
 #   bin/penumbra, bin/penumbra-sandbox        run against lib/ ($ORIGIN/../lib)
 #   lib/libpenumbra.so.0                      Penumbra::engine (and Penumbra::passes)
+#   lib/libpenumbra_techniques.a              Penumbra::techniques (the built-ins, for plugins' tests)
+#   lib/libpenumbra_reference_rt.a            Penumbra::reference (the ray-traced reference; Embree)
 #   lib/libpenumbra_test_support.a            Penumbra::test_support
 #   include/penumbra/{gl,graph,exec,technique,plugin,scene,metrics,util}/  engine headers
-#   include/penumbra/{passes,test_support}/   pass and test support headers
+#   include/penumbra/{passes,techniques,test_support}/  pass, built-in technique and test
+#                                             support headers
 #   include/penumbra/{glad,KHR}/              the GL loader this libpenumbra was built with
 #   share/penumbra/shaders/                   passes/**.glsl and engine/gl/shaders (also
 #                                             embedded in libpenumbra; installed to read)
@@ -23,7 +26,7 @@ include(CMakePackageConfigHelpers)
 set(PENUMBRA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Penumbra)
 set(PENUMBRA_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/penumbra)
 
-set(install_targets penumbra_engine penumbra_passes)
+set(install_targets penumbra_engine penumbra_passes penumbra_techniques penumbra_reference_rt)
 set(PENUMBRA_INSTALL_TEST_SUPPORT OFF)
 if(TARGET penumbra_test_support)
   list(APPEND install_targets penumbra_test_support)
@@ -52,6 +55,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/ DESTINATION ${PENUMBRA_INSTALL_I
   FILES_MATCHING PATTERN "*.h")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/passes DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/techniques DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
+  FILES_MATCHING PATTERN "*.h" PATTERN "_template" EXCLUDE)
 if(TARGET penumbra_test_support)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/test_support DESTINATION ${PENUMBRA_INSTALL_INCLUDEDIR}
     FILES_MATCHING PATTERN "*.h")

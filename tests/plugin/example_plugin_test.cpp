@@ -1,9 +1,10 @@
-// The out-of-tree example (examples/plugin-vsm) as a user builds it: `cmake --install` of this
-// build to a temporary prefix, the example configured in a folder of its own with
-// find_package(Penumbra) against that prefix and built, its own test run (ctest), then the
-// INSTALLED `penumbra` and `penumbra-sandbox` load it with --plugin-dir: its parameters are
-// listed, it renders a soft shadow, eval has its row, the sandbox's scripted mode renders it.
-// One process (not one per test case): the install and the build happen once, in main().
+// The out-of-tree examples (examples/plugin-vsm, examples/plugin-msm) as a user builds them:
+// `cmake --install` of this build to a temporary prefix, each example configured in a folder of
+// its own with find_package(Penumbra) against that prefix and built, its own tests run (ctest:
+// msm's compare it with the installed built-in techniques and ray-traced reference), then the
+// INSTALLED `penumbra` and `penumbra-sandbox` load them with --plugin-dir: parameters listed, a
+// soft shadow rendered, eval's row, the sandbox's scripted mode.
+// One process (not one per test case): the install and the builds happen once, in main().
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,9 +21,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path g_work;      // prefix/, build/ and outputs, under the temp folder
+fs::path g_work;      // prefix/, build-NAME/ and outputs, under the temp folder
 fs::path g_prefix;
-fs::path g_plugins;   // the example's plugin directory
+fs::path g_plugins;   // the vsm example's plugin directory
+fs::path g_msm_plugins;
 
 std::string q(const fs::path& p) { return shell_quote(p.string()); }
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -36,29 +38,60 @@ class ExampleEnvironment : public ::testing::Environment {
   void SetUp() override {
     g_work = fresh_temp_dir("plugin_example");
     g_prefix = g_work / "prefix";
-    const fs::path build = g_work / "build";
-    g_plugins = build / "plugins";
-    const std::string cmake = shell_quote(PENUMBRA_CMAKE);
-    CommandRun install = run_command(cmake + " --install " + shell_quote(PENUMBRA_BUILD_DIR) + " --prefix " + q(g_prefix));
+    CommandRun install = run_command(shell_quote(PENUMBRA_CMAKE) + " --install " + shell_quote(PENUMBRA_BUILD_DIR) +
+                                     " --prefix " + q(g_prefix));
     ASSERT_EQ(install.exit_code, 0) << install.output;
-    CommandRun configure = run_command(cmake + " -G Ninja -S " + shell_quote(PENUMBRA_EXAMPLE_SOURCE) + " -B " + q(build) +
+    g_plugins = build_example("vsm", vsm_ctest);
+    g_msm_plugins = build_example("msm", msm_ctest);
+  }
+  // Configures and builds examples/plugin-NAME against the prefix, runs its ctest; its plugins/.
+  static fs::path build_example(const std::string& name, CommandRun& ctest) {
+    const fs::path build = g_work / ("build-" + name);
+    const std::string cmake = shell_quote(PENUMBRA_CMAKE);
+    const fs::path source = fs::path(PENUMBRA_EXAMPLES_DIR) / ("plugin-" + name);
+    CommandRun configure = run_command(cmake + " -G Ninja -S " + q(source) + " -B " + q(build) +
                                        " -DCMAKE_BUILD_TYPE=" PENUMBRA_BUILD_TYPE " -DCMAKE_PREFIX_PATH=" + q(g_prefix));
-    ASSERT_EQ(configure.exit_code, 0) << configure.output;
+    EXPECT_EQ(configure.exit_code, 0) << configure.output;
     CommandRun compile = run_command(cmake + " --build " + q(build) + " -j 2");
-    ASSERT_EQ(compile.exit_code, 0) << compile.output;
-    ASSERT_TRUE(fs::exists(g_plugins / "vsm.so"));
-    ASSERT_TRUE(fs::exists(g_plugins / "vsm" / "vsm.json")) << "the graph beside the .so";
+    EXPECT_EQ(compile.exit_code, 0) << compile.output;
+    EXPECT_TRUE(fs::exists(build / "plugins" / (name + ".so")));
+    EXPECT_TRUE(fs::exists(build / "plugins" / name / (name + ".json"))) << "the graph beside the .so";
     ctest = run_command(shell_quote(PENUMBRA_CTEST) + " --test-dir " + q(build) + " --output-on-failure");
+    return build / "plugins";
   }
   void TearDown() override {
     if (!::testing::UnitTest::GetInstance()->Failed()) fs::remove_all(g_work);  // kept to look at
   }
-  static inline CommandRun ctest;
+  static inline CommandRun vsm_ctest, msm_ctest;
 };
 
 TEST(OutOfTreeExample, ItsOwnTestsPassAgainstTheInstalledTestSupport) {
-  EXPECT_EQ(ExampleEnvironment::ctest.exit_code, 0) << ExampleEnvironment::ctest.output;
-  EXPECT_TRUE(contains(ExampleEnvironment::ctest.output, "100% tests passed")) << ExampleEnvironment::ctest.output;
+  for (const CommandRun* run : {&ExampleEnvironment::vsm_ctest, &ExampleEnvironment::msm_ctest}) {
+    EXPECT_EQ(run->exit_code, 0) << run->output;
+    EXPECT_TRUE(contains(run->output, "100% tests passed")) << run->output;
+  }
+}
+
+// The installed `penumbra render` of the ball with a plugin's technique: an umbra, lit ground and
+// a penumbra between.
+void expect_soft_shadow(const fs::path& plugins, const std::string& technique_and_settings, const std::string& png) {
+  const fs::path mask = g_work / png;
+  CommandRun r = installed("penumbra", "render --context osmesa --plugin-dir " + q(plugins) + " --technique " +
+                                           technique_and_settings + " --scene ball --size 96x64 --shadow-size 512 --mask " +
+                                           q(mask));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const sandbox_test::ImageStats s = sandbox_test::png_stats(mask.string());
+  ASSERT_TRUE(s.loaded);
+  EXPECT_GT(s.dark, 0.005) << "the ball's umbra";
+  EXPECT_GT(s.bright, 0.5) << "lit ground";
+  EXPECT_LT(s.dark + s.bright, 1.0) << "some penumbra between";
+}
+
+TEST(OutOfTreeExample, TheMomentShadowMapRendersASoftShadowFromTheInstalledCli) {
+  CommandRun list = installed("penumbra", "techniques msm --json --plugin-dir " + q(g_msm_plugins));
+  ASSERT_EQ(list.exit_code, 0) << list.output;
+  EXPECT_TRUE(contains(list.output, "moment_format")) << list.output;
+  expect_soft_shadow(g_msm_plugins, "msm --set moment_format=RGBA16", "msm_mask.png");
 }
 
 TEST(OutOfTreeExample, TechniquesListsItsParameters) {
@@ -76,16 +109,7 @@ TEST(OutOfTreeExample, TechniquesListsItsParameters) {
 }
 
 TEST(OutOfTreeExample, RenderWritesASoftShadow) {
-  const fs::path mask = g_work / "vsm_mask.png";
-  CommandRun r = installed("penumbra", "render --context osmesa --plugin-dir " + q(g_plugins) +
-                                           " --technique vsm --set blur_radius=4 --scene ball --size 96x64"
-                                           " --shadow-size 512 --mask " + q(mask));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const sandbox_test::ImageStats s = sandbox_test::png_stats(mask.string());
-  ASSERT_TRUE(s.loaded);
-  EXPECT_GT(s.dark, 0.005) << "the ball's umbra";
-  EXPECT_GT(s.bright, 0.5) << "lit ground";
-  EXPECT_LT(s.dark + s.bright, 1.0) << "some penumbra between";
+  expect_soft_shadow(g_plugins, "vsm --set blur_radius=4", "vsm_mask.png");
 }
 
 TEST(OutOfTreeExample, EvalHasItsRow) {

@@ -42,7 +42,7 @@ Widths widths_at(BaselineRenderer& r, float height) {
   RenderedFrame f = r.render(s, "sspcss", {}, kW, kH);
   save_for_inspection("ball_separable_h" + std::to_string(height), f.mask);
   w.separable = width_or_fail(f.mask, p0, p1, "separable" + at);
-  w.reference = width_or_fail(trace_reference(s, f), p0, p1, "reference" + at);
+  w.reference = width_or_fail(traced_reference(s, f), p0, p1, "reference" + at);
   RenderedFrame g = r.render(s, "sspcss", {{"filter", "poisson"}}, kW, kH);
   w.poisson = width_or_fail(g.mask, p0, p1, "poisson" + at);
   return w;

@@ -37,7 +37,7 @@ TEST_P(SspcssReference, PenumbraCloserToTheReferenceThanHardAndPcf) {
   BaselineRenderer r;
   const scene::Scene s = builtin_scene(c.scene);
   RenderedFrame f = r.render(s, "sspcss", {}, kW, kH);
-  const metrics::MaskImage ref = trace_reference(s, f);
+  const metrics::MaskImage ref = traced_reference(s, f);
   save_for_inspection(std::string(c.scene) + "_sspcss", f.mask);
   save_for_inspection(std::string(c.scene) + "_reference", ref);
   const double sspcss = penumbra_rmse(f.mask, ref, f.coverage);

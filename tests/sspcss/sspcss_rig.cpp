@@ -2,26 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "metrics/mask_metrics.h"
-#include "raytraced_reference.h"
 #include "scene/mesh_builder.h"
 
 namespace penumbra::test {
-
-metrics::MaskImage trace_reference(const scene::Scene& scene, const RenderedFrame& frame) {
-  Result<reference::RayScene> rs = reference::RayScene::build(scene);
-  EXPECT_TRUE(rs) << (rs ? "" : rs.error().to_string());
-  if (!rs) return {};
-  return reference::trace_visibility(*rs, scene.light, frame.positions, frame.normals, frame.mask.width,
-                                     frame.mask.height, {.samples = 256}, frame.coverage);
-}
-
-double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference,
-                     const metrics::CoverageMask& coverage) {
-  Result<metrics::MaskErrors> e = metrics::compare_masks(mask, reference, coverage);
-  EXPECT_TRUE(e) << (e ? "" : e.error().to_string());
-  return e ? e->rmse_penumbra : 1.0;
-}
 
 scene::Scene edge_test_scene() {
   scene::Scene s;

@@ -1,7 +1,8 @@
 #pragma once
 // What the sspcss tests share: rendering any technique through the baseline tests' renderer
 // (tests/baseline/baseline_frame.h; TechniqueRig::read for the technique's debug resources), the
-// ray-traced reference of a rendered frame, and the scene built for the edge-awareness test.
+// reference comparison (test_support/reference_comparison.h) and the scene built for the
+// edge-awareness test.
 #include <string>
 
 #include <glm/glm.hpp>
@@ -10,15 +11,9 @@
 #include "metrics/mask_image.h"
 #include "scene/scene.h"
 #include "test_support/inspection.h"
+#include "test_support/reference_comparison.h"
 
 namespace penumbra::test {
-
-// Exact area-light visibility (Embree, 256 light samples) for the frame's G-buffer.
-metrics::MaskImage trace_reference(const scene::Scene& scene, const RenderedFrame& frame);
-
-// penumbra RMSE of `mask` against `reference` over the frame's receivers.
-double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference,
-                     const metrics::CoverageMask& coverage);
 
 // The edge-awareness scene (edge_awareness_test.cpp says why it looks like this): a ground plane
 // half in the umbra of a high slab (the umbra covers world x > 0) and, near the camera, a

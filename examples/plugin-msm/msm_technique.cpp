@@ -1,0 +1,74 @@
+#include "msm_technique.h"
+
+#include "exec/pass_decl_builder.h"
+#include "msm_quantization.h"
+#include "passes/common/shadow_uniforms.h"
+#include "passes/shadow_map/light_view_pass.h"
+
+namespace msm {
+namespace {
+
+using penumbra::Status;
+using penumbra::exec::PassContext;
+using penumbra::graph::Format;
+
+class MaskPass final : public penumbra::exec::PassImpl {
+ public:
+  Status execute(PassContext& ctx) override {
+    penumbra::gl::ShaderProgram& p = ctx.program({.compute = "msm/msm_mask.comp.glsl"});
+    if (!p.valid()) return *p.last_error();
+    ctx.bind_sampled(p, "u_depth", "depth");
+    ctx.bind_sampled(p, "u_normal", "normal");
+    ctx.bind_sampled(p, "u_moments", "moments", bilinear_.id());  // the paper filters bilinearly too
+    ctx.bind_image(0, "mask", GL_WRITE_ONLY);
+    penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame());
+    p.program().set("u_to_canonical", kToCanonical);
+    p.program().set("u_optimised_offset", kOptimisedOffset);
+    p.program().set("u_moment_bias", ctx.real("moment_bias"));
+    p.program().set("u_depth_bias", ctx.real("depth_bias"));
+    ctx.dispatch_over(p, ctx.texture("mask"));
+    return {};
+  }
+
+ private:
+  penumbra::gl::Sampler bilinear_{penumbra::gl::Sampler::Filter::linear, penumbra::gl::Sampler::Wrap::clamp};
+};
+
+}  // namespace
+
+penumbra::exec::PassType moments_pass_type() {
+  return penumbra::passes::light_view_pass_type(
+      {.type_name = "msm_moments",
+       .description = "MSM: four optimised moments of the casters' light depth (raster)",
+       .fragment_shader = "msm/msm_moments.frag.glsl",
+       .colour_targets = {{.slot = "moments", .formats = {Format::RGBA16, Format::RGBA32F},
+                           .clear = optimised_moments(1.0f)}},
+       .set_uniforms = [](PassContext&, const penumbra::gl::Program& program) {
+         program.set("u_to_optimised", kToOptimised);
+         program.set("u_optimised_offset", kOptimisedOffset);
+       }});
+}
+
+penumbra::exec::PassType mask_pass_type() {
+  return penumbra::exec::PassDeclBuilder("msm_mask")
+      .describe("MSM: Hamburger 4MSM reconstruction of the receiver's shadow from filtered moments (compute)")
+      .sampled("depth", {Format::R32F})
+      .sampled("normal", {Format::RG16})
+      .sampled("moments", {Format::RGBA16, Format::RGBA32F})
+      .image_out("mask", {Format::R16F})
+      .same_size({"depth", "mask"})
+      .real("moment_bias", 6e-5, 0.0, 0.01, "", "alpha: moments pulled towards (0.5, ...) against rounding (paper, 16-bit)")
+      .real("depth_bias", 0.0, 0.0, 0.05, "window depth", "subtracted from the receiver's light depth (acne)")
+      .build<MaskPass>();
+}
+
+void register_technique(penumbra::technique::TechniqueRegistry& registry) {
+  registry.add({.name = "msm",
+                .graph_file = "msm/msm.json",
+                .register_passes = [](penumbra::exec::PassLibrary& library) {
+                  library.add(moments_pass_type());
+                  library.add(mask_pass_type());
+                }});
+}
+
+}  // namespace msm

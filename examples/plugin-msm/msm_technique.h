@@ -1,0 +1,20 @@
+#pragma once
+// Moment Shadow Mapping (Peters & Klein, "Moment Shadow Mapping", I3D 2015): each shadow-map
+// texel stores four moments of the light depth, the map is filtered like a texture, and a
+// receiver's shadow is the Hamburger 4MSM bound from the filtered moments. Built on Penumbra's
+// shared passes: a light-view pass with this plugin's fragment shader writes the moments,
+// separable_filter blurs them, one compute pass of its own reconstructs.
+#include "exec/pass.h"
+#include "technique/technique.h"
+
+namespace msm {
+
+// "msm_moments": the casters from the light into `moments` (RGBA16 or RGBA32F) and `depth`.
+penumbra::exec::PassType moments_pass_type();
+// "msm_mask": G-buffer view depth + filtered moments -> shadow_mask (compute).
+penumbra::exec::PassType mask_pass_type();
+
+// Adds technique "msm" (graph msm/msm.json beside the plugin's .so) and both pass types.
+void register_technique(penumbra::technique::TechniqueRegistry& registry);
+
+}  // namespace msm

@@ -1,0 +1,78 @@
+// The MSM plugin's tests (Penumbra::test_support): against the ray-traced reference of the same
+// frame, MSM is nearer the truth than the built-in hard shadow map on every built-in scene and
+// than PCF on every one but showcase (README.md "Against the reference" says why; PCSS is
+// rendered and reported beside them); lit receivers stay lit; the 16-bit map gives the 32-bit
+// map's shadow.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "scene/builtin_scenes.h"
+#include "techniques/builtin_techniques.h"
+#include "test_support/reference_comparison.h"
+#include "test_support/technique_rig.h"
+
+namespace {
+
+using namespace penumbra::test;
+
+constexpr int kW = 160, kH = 120, kShadow = 1024;
+
+TechniqueRig make_rig() {
+  return TechniqueRig({.width = kW, .height = kH, .shadow_size = kShadow,
+                       .techniques = penumbra::register_builtin_techniques, .plugin_dirs = {MSM_PLUGIN_DIR}});
+}
+
+class MsmOnEveryScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MsmOnEveryScene, NearerTheTruthThanHardAndPcf) {
+  TechniqueRig rig = make_rig();
+  const penumbra::scene::Scene s = builtin_scene(GetParam());
+  const RenderedFrame msm = rig.render_frame(s, "msm");
+  const penumbra::metrics::MaskImage truth = traced_reference(s, msm);
+  const double e_msm = penumbra_rmse(msm.mask, truth, msm.coverage);
+  const double e_pcf = penumbra_rmse(rig.render_frame(s, "pcf").mask, truth, msm.coverage);
+  const double e_pcss = penumbra_rmse(rig.render_frame(s, "pcss").mask, truth, msm.coverage);
+  const double e_hard = penumbra_rmse(rig.render_frame(s, "hard").mask, truth, msm.coverage);
+  std::printf("%s: penumbra RMSE msm %.4f, hard %.4f, pcf %.4f, pcss %.4f\n", GetParam().c_str(), e_msm, e_hard,
+              e_pcf, e_pcss);
+  EXPECT_LT(e_msm, e_hard);
+  // showcase: the reconstruction leaks light under its colonnade's roof, where roof, columns and
+  // ground fall within one filter footprint (README.md measured where the error lies).
+  if (GetParam() != "showcase") EXPECT_LT(e_msm, e_pcf);
+}
+
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, MsmOnEveryScene, ::testing::ValuesIn(penumbra::scene::builtin_scene_names()));
+
+TEST(Msm, LitReceiversStayLitAndTheBallCastsAnUmbra) {
+  TechniqueRig rig = make_rig();
+  const RenderedFrame f = rig.render_frame(builtin_scene("ball"), "msm");
+  int lit = 0, dark = 0, receivers = 0;
+  for (size_t i = 0; i < f.mask.pixels.size(); ++i) {
+    if (!f.coverage[i]) {
+      EXPECT_EQ(f.mask.pixels[i], 1.0f) << "background";
+      continue;
+    }
+    ++receivers;
+    lit += f.mask.pixels[i] >= 0.99f;
+    dark += f.mask.pixels[i] <= 0.05f;
+  }
+  EXPECT_GT(lit, receivers / 2) << "most of the ground is lit and stays so (no acne)";
+  EXPECT_GT(dark, 20) << "the ball's umbra";
+}
+
+TEST(Msm, SixteenBitMomentsGiveTheThirtyTwoBitShadow) {
+  TechniqueRig rig = make_rig();
+  const penumbra::scene::Scene s = builtin_scene("ball");
+  const RenderedFrame half = rig.render_frame(s, "msm", {"moment_format=RGBA16"});
+  const RenderedFrame full = rig.render_frame(s, "msm", {"moment_format=RGBA32F"});
+  ASSERT_EQ(half.mask.pixels.size(), full.mask.pixels.size());
+  double worst = 0.0;
+  for (size_t i = 0; i < half.mask.pixels.size(); ++i)
+    worst = std::max(worst, static_cast<double>(std::abs(half.mask.pixels[i] - full.mask.pixels[i])));
+  EXPECT_LT(worst, 0.1) << "the optimised quantisation keeps the moments";
+}
+
+}  // namespace

@@ -1,0 +1,27 @@
+#pragma once
+// A rendered frame against the truth: the ray-traced reference (Embree, techniques/reference) of
+// the frame's own G-buffer, and the penumbra RMSE of any mask against it. With the built-in
+// techniques registered beside a plugin, a plugin's test states "nearer the truth than PCF":
+//
+//   TechniqueRig rig({.techniques = penumbra::register_builtin_techniques,  // Penumbra::techniques
+//                     .plugin_dirs = {MY_PLUGIN_DIR}});
+//   const scene::Scene s = builtin_scene("ball");
+//   RenderedFrame mine = rig.render_frame(s, "msm"), pcf = rig.render_frame(s, "pcf");
+//   metrics::MaskImage truth = traced_reference(s, mine);
+//   EXPECT_LT(penumbra_rmse(mine.mask, truth, mine.coverage), penumbra_rmse(pcf.mask, truth, pcf.coverage));
+#include "metrics/mask_image.h"
+#include "scene/scene.h"
+#include "test_support/technique_rig.h"
+
+namespace penumbra::test {
+
+// Exact area-light visibility of the scene's light (`samples` stratified light points) at the
+// frame's receivers; 1 off them. Rows top to bottom, like the frame's mask.
+metrics::MaskImage traced_reference(const scene::Scene& scene, const RenderedFrame& frame, int samples = 256);
+
+// Penumbra RMSE (metrics::compare_masks: pixels the reference puts strictly between lit and
+// umbra) of `mask` against `reference` over `coverage`; fails the test and returns 1 on error.
+double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference,
+                     const metrics::CoverageMask& coverage);
+
+}  // namespace penumbra::test
