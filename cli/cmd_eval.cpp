@@ -2,6 +2,7 @@
 // (same scene, camera, light, size), over receiver pixels, plus the technique's GPU time.
 // Everything is computed before anything is written, so bad input or a failure leaves no
 // partial JSON or heat map behind.
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
@@ -42,7 +43,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"samples", true, false, "N", "raster reference: light sample points / shadow maps (default 1024)"},
     {"frames", true, false, "N", "measured frames per technique for the median time (default 10)"},
     {"json", true, false, "OUT.json", "write the results as JSON"},
-    {"heatmaps", true, false, "DIR", "write one error heat-map PNG per technique into DIR"},
+    {"heatmaps", true, false, "DIR", "write one error heat-map PNG per technique into DIR, and the frame's pixel classes (SCENE_classes.png)"},
     {"masks", true, false, "DIR", "write each technique's shadow mask and the reference's as grey PNGs into DIR"},
     {"set", true, true, kAssignmentValueName, "set a parameter of every listed technique (and the reference) that has it"},
     {"no-cache", false, false, "", "render the reference even when a cached one matches, and do not cache it"},
@@ -144,7 +145,8 @@ std::string file_label(const std::string& label) {
 
 // Every output or none (util/output_batch.h): a report beside heat maps of another run misleads.
 Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::vector<metrics::MaskImage>& masks,
-                     const metrics::MaskImage& reference, const metrics::CoverageMask& coverage) {
+                     const metrics::MaskImage& reference, const metrics::CoverageMask& coverage,
+                     const metrics::PixelClasses& classes) {
   OutputBatch out;
   std::vector<std::string> written;
   auto write = [&](const std::string& path, auto&& write_to) -> Status {
@@ -165,6 +167,11 @@ Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::
       if (!map) return map.error();
       const std::string path = o.heatmaps + "/" + report.scene + "_" + file_label(report.rows[i].technique) + "_error.png";
       if (Status s = write(path, [&](const std::string& tmp) { return metrics::write_png(tmp, *map); }); !s) return s;
+    }
+    if (!classes.classes.empty()) {  // what the penumbra and geometric-edge columns count
+      const std::string path = o.heatmaps + "/" + report.scene + "_classes.png";
+      const metrics::RgbaImage image = metrics::pixel_class_image(classes);
+      if (Status s = write(path, [&](const std::string& tmp) { return metrics::write_png(tmp, image); }); !s) return s;
     }
   }
   if (!o.masks.empty()) {
@@ -216,9 +223,13 @@ int cmd_eval(const std::vector<std::string>& argv) {
                                     "[--heatmaps DIR] [--masks DIR] [--flicker pan|light] [--set k=v]...\n"
                                     "                     [--camera C] [--light-dir X,Y,Z] [--light-size S] [--ground on|off]",
                                     "Renders a ground-truth reference once, then each technique on the same frame,\n"
-                                    "and compares shadow masks over receiver pixels (RMSE, RMSE in the penumbra\n"
-                                    "0.02 < ref < 0.98, MAE, max error, SSIM, edge error = mean |error| within 3 px\n"
-                                    "of a reference edge) and times the technique's passes (median ms).\n"
+                                    "and compares shadow masks over receiver pixels (RMSE, MAE, max error, SSIM,\n"
+                                    "edge error = mean |error| within 3 px of a reference edge) and times the\n"
+                                    "technique's passes (median ms). Receivers are split into classes from the\n"
+                                    "reference and the G-buffer: geometric edges (2 px of a depth or normal\n"
+                                    "discontinuity or a self-shadowing terminator: their own RMSE column), the\n"
+                                    "soft penumbra (0.02 < ref < 0.98 elsewhere: RMSE penumbra, marked * when it\n"
+                                    "is under 1% of the receivers or mostly single pixels), lit and umbra.\n"
                                     "Exact hard reference: --light-size 0 (one ray per pixel sample); add\n"
                                     "--set pixel_samples=4 for the pixel-box-filtered (anti-aliased) one.\n"
                                     "--flicker pan|light renders a slow motion and reports each technique's mean\n"
@@ -253,22 +264,36 @@ int cmd_eval(const std::vector<std::string>& argv) {
                reference->from_cache ? ("read from the cache, " + reference->cache_file).c_str() : "done",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 
+  if (std::find(reference->coverage.begin(), reference->coverage.end(), uint8_t{1}) == reference->coverage.end()) {
+    const scene::Camera& c = session.camera();
+    const glm::vec3 f = c.forward();
+    char where[200];
+    std::snprintf(where, sizeof where, "the camera at (%g, %g, %g) looking along (%.3f, %.3f, %.3f)", c.position.x,
+                  c.position.y, c.position.z, f.x, f.y, f.z);
+    return fail(make_error(std::string(where) + " sees no surface of " + scene->name +
+                               ": no receiver pixel to compare (choose another --camera, or `fit`)",
+                           ErrorKind::bad_input));
+  }
+
   EvalReport report{scene->name, o.reference, {}};
   std::vector<metrics::MaskImage> masks;
+  metrics::PixelClasses classes;  // the frame's: the same for every technique
   for (const TechniqueSpec& t : o.techniques) {
     std::fprintf(stderr, "technique %s...\n", t.label.c_str());
     auto evaluated = evaluate_technique(session, t, o.sets, *reference, kWarmupFrames, o.frames);
     if (!evaluated) return fail(evaluated.error());
     report.rows.push_back(evaluated->row);
     masks.push_back(std::move(evaluated->mask));
+    classes = std::move(evaluated->classes);
   }
   if (o.flicker) {
     if (Status s = measure_flicker(session, o, report); !s) return fail(s.error());
   }
-  std::printf("scene %s, reference %s, %dx%d, %zu receiver pixels (%zu in the reference's penumbra)\n",
+  std::printf("scene %s, reference %s, %dx%d, %zu receiver pixels (%zu soft penumbra, %zu geometric edge)\n",
               report.scene.c_str(), o.reference.c_str(), o.width, o.height,
               report.rows.empty() ? size_t{0} : report.rows[0].errors.pixels,
-              report.rows.empty() ? size_t{0} : report.rows[0].errors.penumbra_pixels);
+              report.rows.empty() ? size_t{0} : report.rows[0].errors.penumbra_pixels,
+              report.rows.empty() ? size_t{0} : report.rows[0].errors.geometric_edge_pixels);
   std::printf("%s", eval_report_table(report).c_str());
   std::printf("ms: median of %d frames of the technique's passes, timed with %s\n", o.frames,
               timing_mode_note(session).c_str());
@@ -276,7 +301,8 @@ int cmd_eval(const std::vector<std::string>& argv) {
     std::printf("flicker: mean |change| of the reprojected mask over a %d-frame %s (%.3g deg/frame), minus the "
                 "reference's (%.5f)\n", o.flicker->frames, o.flicker->motion == "pan" ? "camera pan" : "light motion",
                 o.flicker->degrees_per_frame, report.flicker_reference);
-  if (Status s = write_outputs(o, report, masks, reference->mask, reference->coverage); !s) return fail(s.error());
+  if (Status s = write_outputs(o, report, masks, reference->mask, reference->coverage, classes); !s)
+    return fail(s.error());
   return 0;
 }
 

@@ -5,6 +5,7 @@
 #include "exec/gbuffer_readback.h"
 #include "gl/timer_query.h"
 #include "passes/shared_passes.h"
+#include "util/row_order.h"
 
 namespace penumbra::measurement {
 
@@ -36,6 +37,26 @@ metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_depth) {
     coverage[static_cast<size_t>(y) * w + x] = t[0] > 0.0f;
   });
   return coverage;
+}
+
+Status keep_alive(technique::TechniqueSession& session, const std::vector<std::string>& resources) {
+  auto& keep = session.compile_options().keep_alive;
+  bool added = false;
+  for (const std::string& r : resources)
+    if (std::find(keep.begin(), keep.end(), r) == keep.end()) {
+      keep.push_back(r);
+      added = true;
+    }
+  return added ? session.recompile() : Status{};
+}
+
+Result<metrics::ReceiverGeometry> read_receiver_geometry(technique::TechniqueSession& session) {
+  gl::Texture* depth = session.executor().resource("gbuffer_depth");
+  gl::Texture* normal = session.executor().resource("gbuffer_normal");
+  if (!depth || !normal) return make_error("the frame lacks gbuffer_depth or gbuffer_normal", ErrorKind::internal);
+  const std::vector<glm::vec4> positions = exec::read_positions(*depth, session.camera(), exec::RowOrder::top_down);
+  const std::vector<glm::vec3> normals = rows_flipped(exec::read_normals(*normal), depth->width(), depth->height());
+  return metrics::receiver_geometry(depth->width(), depth->height(), positions, normals, session.light());
 }
 
 Status render_timed_frames(technique::TechniqueSession& session, int warmup, int frames) {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "metrics/mask_image.h"
+#include "metrics/pixel_classes.h"
 #include "technique/technique_session.h"
 #include "util/error.h"
 
@@ -17,6 +18,13 @@ namespace penumbra::measurement {
 metrics::MaskImage read_mask_image(const gl::Texture& texture);
 // Receiver pixels: gbuffer_depth > 0 (the frame contract), rows top to bottom.
 metrics::CoverageMask read_coverage(const gl::Texture& gbuffer_depth);
+// Adds `resources` to what the session's plan keeps alive for read-back after a frame (and
+// recompiles) when they are not kept yet.
+Status keep_alive(technique::TechniqueSession& session, const std::vector<std::string>& resources);
+// The last frame's receivers for the pixel classes (metrics/pixel_classes.h): view depth, world
+// normal and N · (direction to the session's light), rows top to bottom. Needs gbuffer_depth and
+// gbuffer_normal kept alive (keep_alive above).
+Result<metrics::ReceiverGeometry> read_receiver_geometry(technique::TechniqueSession& session);
 // Renders `warmup` frames, then `frames` measured frames (plus the timer's read-back latency
 // when timings come from GPU timestamp queries, so the measured frames are the last ones read).
 Status render_timed_frames(technique::TechniqueSession& session, int warmup, int frames);

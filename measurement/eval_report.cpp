@@ -12,9 +12,16 @@ std::string eval_report_json(const EvalReport& report) {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   const bool flicker = !report.flicker_motion.empty();
   for (const EvalRow& r : report.rows) {
+    const metrics::MaskErrors& e = r.errors;
     nlohmann::ordered_json row = {{"technique", r.technique},
-                                  {"rmse", r.errors.rmse},
-                                  {"rmse_penumbra", r.errors.rmse_penumbra},
+                                  {"rmse", e.rmse},
+                                  // Not applicable without a soft penumbra (a point light, size 0).
+                                  {"rmse_penumbra", e.penumbra_pixels ? nlohmann::ordered_json(e.rmse_penumbra) : nullptr},
+                                  {"penumbra_pixels", e.penumbra_pixels},
+                                  {"penumbra_reliable", e.reliability.reliable},
+                                  {"penumbra_unreliable_because", e.reliability.reason},
+                                  {"rmse_geometric_edge", e.geometric_edge_pixels ? nlohmann::ordered_json(e.rmse_geometric_edge) : nullptr},
+                                  {"geometric_edge_pixels", e.geometric_edge_pixels},
                                   {"mae", r.errors.mae},
                                   {"max_error", r.errors.max_error},
                                   {"ssim", r.errors.ssim},
@@ -43,20 +50,34 @@ std::string eval_report_table(const EvalReport& report) {
   int width = 14;
   for (const EvalRow& r : report.rows) width = std::max(width, static_cast<int>(std::min<size_t>(r.technique.size(), 200)));
   const bool flicker = !report.flicker_motion.empty();
-  std::snprintf(line, sizeof line, "%-*s %9s %13s %9s %9s %7s %9s %10s%s\n", width, "technique", "RMSE", "RMSE penumbra",
-                "MAE", "max", "SSIM", "edge", "ms", flicker ? "   flicker" : "");
+  std::snprintf(line, sizeof line, "%-*s %9s %13s %8s %13s %9s %9s %7s %9s %10s%s\n", width, "technique", "RMSE",
+                "RMSE penumbra", "pixels", "RMSE geo-edge", "MAE", "max", "SSIM", "edge", "ms", flicker ? "   flicker" : "");
   out += line;
+  std::string unreliable;
   for (const EvalRow& r : report.rows) {
-    std::snprintf(line, sizeof line, "%-*s %9.5f %13.5f %9.5f %9.4f %7.4f %9.5f %10.3f", width, r.technique.c_str(),
-                  r.errors.rmse, r.errors.rmse_penumbra, r.errors.mae, r.errors.max_error, r.errors.ssim,
-                  r.errors.edge_error, r.gpu_ms);
+    const metrics::MaskErrors& e = r.errors;
+    char penumbra[32], geo[32];
+    if (e.penumbra_pixels)
+      std::snprintf(penumbra, sizeof penumbra, "%s%.5f", e.reliability.reliable ? "" : "*", e.rmse_penumbra);
+    else
+      std::snprintf(penumbra, sizeof penumbra, "n/a");
+    if (e.geometric_edge_pixels)
+      std::snprintf(geo, sizeof geo, "%.5f", e.rmse_geometric_edge);
+    else
+      std::snprintf(geo, sizeof geo, "n/a");
+    std::snprintf(line, sizeof line, "%-*s %9.5f %13s %8zu %13s %9.5f %9.4f %7.4f %9.5f %10.3f", width, r.technique.c_str(),
+                  e.rmse, penumbra, e.penumbra_pixels, geo, e.mae, e.max_error, e.ssim, e.edge_error, r.gpu_ms);
     out += line;
     if (flicker) {
       std::snprintf(line, sizeof line, " %+10.5f", r.flicker);
       out += line;
     }
     out += "\n";
+    if (!e.reliability.reliable && unreliable.empty()) unreliable = e.reliability.reason;
   }
+  // The classes are the frame's, the same for every row: one note.
+  if (!unreliable.empty())
+    out += "* penumbra RMSE unreliable on this frame: " + unreliable + " (docs/evaluation.md, \"Pixel classes\")\n";
   return out;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
 // The results of `penumbra eval` as a table and as the JSON of docs/evaluation.md:
-//   {"scene":..., "reference":..., "rows":[{"technique":..., "rmse":..., "rmse_penumbra":...,
-//    "mae":..., "max_error":..., "ssim":..., "edge_error":..., "gpu_ms":...}]}
+//   {"scene":..., "reference":..., "rows":[{"technique":..., "rmse":..., "rmse_penumbra": ... | null,
+//    "penumbra_pixels":..., "penumbra_reliable":..., "penumbra_unreliable_because": "...",
+//    "rmse_geometric_edge": ... | null, "geometric_edge_pixels":..., "mae":..., "max_error":...,
+//    "ssim":..., "edge_error":..., "gpu_ms":...}]}
+// The pixel classes behind the penumbra and geometric-edge columns: metrics/pixel_classes.h.
 // With --flicker, the top level adds "flicker_motion", "flicker_frames" and "flicker_reference"
 // (the reference's own temporal change) and each row "temporal_change" and "flicker" (its
 // temporal change minus the reference's).

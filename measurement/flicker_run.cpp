@@ -51,12 +51,7 @@ class Motion {
   scene::Light light_;
 };
 
-Status keep_positions(technique::TechniqueSession& session) {
-  auto& keep = session.compile_options().keep_alive;
-  if (std::find(keep.begin(), keep.end(), "gbuffer_depth") != keep.end()) return {};
-  keep.push_back("gbuffer_depth");
-  return session.recompile();
-}
+Status keep_positions(technique::TechniqueSession& session) { return keep_alive(session, {"gbuffer_depth"}); }
 
 Result<metrics::SurfaceFrame> read_frame(technique::TechniqueSession& session, const Motion& motion) {
   gl::Texture* mask = session.executor().resource(technique::kShadowMask);

@@ -132,11 +132,7 @@ Result<ReferenceFrame> reference_frame(technique::TechniqueSession& session, con
     frame.cache_file = file.string();
     return frame;
   }
-  auto& keep = session.compile_options().keep_alive;
-  if (std::find(keep.begin(), keep.end(), "gbuffer_depth") == keep.end()) {
-    keep.push_back("gbuffer_depth");  // coverage
-    if (Status s = session.recompile(); !s) return s.error();
-  }
+  if (Status s = keep_alive(session, {"gbuffer_depth"}); !s) return s.error();  // coverage
   if (Status s = render_to_completion(session, settings); !s) return s.error();
   gl::Texture* mask = session.executor().resource(technique::kShadowMask);
   gl::Texture* depth = session.executor().resource("gbuffer_depth");

@@ -8,6 +8,7 @@
 #include "measurement/reference_frame.h"
 #include "measurement/technique_spec.h"
 #include "metrics/mask_image.h"
+#include "metrics/pixel_classes.h"
 #include "technique/technique_session.h"
 
 namespace penumbra::measurement {
@@ -15,6 +16,7 @@ namespace penumbra::measurement {
 struct TechniqueEvaluation {
   EvalRow row;                // errors against the reference, median ms of the technique's passes
   metrics::MaskImage mask;    // its shadow_mask, rows top to bottom
+  metrics::PixelClasses classes;  // of the frame (reference + G-buffer), what the errors split by
 };
 
 // Selects `spec` (global_sets first, then its own), renders warmup + frames frames (a listed

@@ -32,13 +32,20 @@ Status configure_partner(technique::TechniqueSession& secondary, technique::Tech
 
 namespace {
 
-Result<metrics::MaskErrors> mask_errors(technique::TechniqueSession& test, technique::TechniqueSession& reference) {
+// The errors of `test` against `reference`, split by the pixel classes of test's G-buffer and the
+// reference's mask (also returned in `classes`).
+Result<metrics::MaskErrors> mask_errors(technique::TechniqueSession& test, technique::TechniqueSession& reference,
+                                        metrics::PixelClasses& classes) {
   gl::Texture* a = test.executor().resource(technique::kShadowMask);
   gl::Texture* b = reference.executor().resource(technique::kShadowMask);
   gl::Texture* depth = test.executor().resource("gbuffer_depth");
   if (!a || !b || !depth) return make_error("shadow_mask or gbuffer_depth missing");
-  return metrics::compare_masks(measurement::read_mask_image(*a), measurement::read_mask_image(*b),
-                                measurement::read_coverage(*depth));
+  Result<metrics::ReceiverGeometry> geometry = measurement::read_receiver_geometry(test);
+  if (!geometry) return geometry.error();
+  const metrics::MaskImage ref = measurement::read_mask_image(*b);
+  const metrics::CoverageMask coverage = measurement::read_coverage(*depth);
+  classes = metrics::classify_pixels(ref, coverage, &*geometry);
+  return metrics::compare_masks(measurement::read_mask_image(*a), ref, coverage, classes);
 }
 
 }  // namespace
@@ -46,7 +53,7 @@ Result<metrics::MaskErrors> mask_errors(technique::TechniqueSession& test, techn
 void update_compare_stats(CompareState& state, technique::TechniqueSession& primary,
                           technique::TechniqueSession& secondary, technique::TechniqueSession* reference) {
   // The secondary plays the reference, unless a third session runs it.
-  Result<metrics::MaskErrors> e = mask_errors(primary, reference ? *reference : secondary);
+  Result<metrics::MaskErrors> e = mask_errors(primary, reference ? *reference : secondary, state.classes);
   if (!e) {
     state.stats_error = e.error().to_string();
     return;
@@ -54,7 +61,8 @@ void update_compare_stats(CompareState& state, technique::TechniqueSession& prim
   state.stats = *e;
   state.stats_b.reset();
   if (reference) {
-    Result<metrics::MaskErrors> b = mask_errors(secondary, *reference);
+    metrics::PixelClasses classes_b;  // the same frame: the same classes
+    Result<metrics::MaskErrors> b = mask_errors(secondary, *reference, classes_b);
     if (!b) {
       state.stats_error = "B: " + b.error().to_string();
       return;

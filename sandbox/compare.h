@@ -26,6 +26,10 @@ struct CompareState {
   float split2 = 0.75f;
   std::optional<metrics::MaskErrors> stats_b;
   float error_max = 0.25f;          // |a - b| shown white in the heat map
+  // The error view shows the pixel classes the statistics are split by instead of the error
+  // (metrics/pixel_classes.h: A's G-buffer and the reference side's mask).
+  bool show_classes = false;
+  metrics::PixelClasses classes;    // of the last read-back
   int stats_every = 10;             // frames between RMSE read-backs
   std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
   std::string stats_error;

@@ -45,9 +45,10 @@ std::string number(double v) {
 }  // namespace
 
 std::string penumbra_rmse_text(const metrics::MaskErrors& e) {
-  if (e.penumbra_pixels == 0) return "n/a (no penumbra)";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4f", e.rmse_penumbra);
+  if (e.penumbra_pixels == 0) return "n/a (no soft penumbra)";
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%.4f%s%s%s", e.rmse_penumbra, e.reliability.reliable ? "" : " (unreliable: ",
+                e.reliability.reason.c_str(), e.reliability.reliable ? "" : ")");
   return buf;
 }
 
@@ -96,6 +97,10 @@ std::string metrics_json(SandboxController& c) {
       out["max_error"] = e.max_error;
       out["pixels"] = e.pixels;
       out["penumbra_pixels"] = e.penumbra_pixels;
+      out["penumbra_reliable"] = e.reliability.reliable;
+      out["penumbra_unreliable_because"] = e.reliability.reason;
+      out["rmse_geometric_edge"] = e.geometric_edge_pixels ? json(e.rmse_geometric_edge) : json(nullptr);
+      out["geometric_edge_pixels"] = e.geometric_edge_pixels;
     };
     // Three-way: the statistics above are A against the reference; B's are under "b".
     k["three_way"] = c.reference_session() != nullptr;

@@ -11,7 +11,8 @@
 
 namespace penumbra::sandbox {
 
-// "0.0123", or "n/a (no penumbra)" when the reference side has no penumbra pixels.
+// "0.0123", "0.0123 (unreliable: <why>)" (metrics::penumbra_reliability), or "n/a (no soft
+// penumbra)" when the reference side has no soft-penumbra pixels.
 std::string penumbra_rmse_text(const metrics::MaskErrors& e);
 
 // How far the progressive techniques on screen (those whose pass reports progress, such as the
@@ -23,7 +24,8 @@ bool progress_complete(SandboxController& c);
 // {"frame", "size", "scene", "technique": {"name", "parameters", "progress"}, "viewer": {"resource", "min",
 //  "max", "channel", "zoom", "center"}, "refused", "passes": [{"name", "type",
 //  "last_ms", "median_ms"}], "compare": null | {"with": {...}, "view", "rmse", "rmse_penumbra"
-//  (null without penumbra), "mae", "max_error", "pixels", "penumbra_pixels", "rmse_history": [...],
+//  (null without penumbra), "mae", "max_error", "pixels", "penumbra_pixels", "penumbra_reliable", "penumbra_unreliable_because",
+//  "rmse_geometric_edge" (null without), "geometric_edge_pixels", "rmse_history": [...],
 //  "passes": [...]}}. A technique's "progress": {"label", "unit", "done", "total", "complete"}, or
 //  null when it reports none.
 // The statistics are read back from the last rendered frame first.

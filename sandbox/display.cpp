@@ -1,5 +1,7 @@
 #include "sandbox/display.h"
 
+#include "util/row_order.h"
+
 #include <algorithm>
 
 #include "exec/frame_uniforms.h"
@@ -128,6 +130,19 @@ Status DisplayPass::difference(const gl::Texture& a, const gl::Texture& b, const
   // The display samples the result next.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   for (int i = 0; i < 3; ++i) glBindSampler(i, 0);
+  return {};
+}
+
+Status DisplayPass::upload_picture(const metrics::RgbaImage& image) {
+  if (image.width != target_.width() || image.height != target_.height())
+    return make_error("a picture of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                          " for a frame of " + std::to_string(target_.width()) + "x" + std::to_string(target_.height()),
+                      ErrorKind::internal);
+  if (!picture_ || picture_.width() != image.width || picture_.height() != image.height) {
+    picture_ = gl::Texture(gl::Format::RGBA8, image.width, image.height);
+    picture_.set_label("sandbox_picture");
+  }
+  picture_.upload_bytes(rows_flipped(image.pixels, static_cast<size_t>(image.width) * 4, image.height).data());
   return {};
 }
 

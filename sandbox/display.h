@@ -14,6 +14,7 @@
 #include "gl/texture.h"
 #include "scene/camera.h"
 #include "util/error.h"
+#include "metrics/mask_image.h"
 
 namespace penumbra::sandbox {
 
@@ -72,6 +73,9 @@ class DisplayPass {
   // difference.r = |a.r - b.r|, difference.g = receiver coverage (gbuffer_depth > 0).
   Status difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& depth);
   const gl::Texture& difference_texture() const { return difference_; }
+  // A CPU picture of the frame's size (rows top to bottom), e.g. the pixel classes, as a texture.
+  Status upload_picture(const metrics::RgbaImage& image);
+  const gl::Texture& picture_texture() const { return picture_; }
 
   exec::ShaderCache& shaders() { return shaders_; }
   const exec::ShaderCache& shaders() const { return shaders_; }
@@ -79,7 +83,7 @@ class DisplayPass {
  private:
   gl::Buffer frame_uniforms_;  // the camera for texel_density (exec/frame_uniforms.h)
   exec::ShaderCache shaders_;
-  gl::Texture target_, difference_;
+  gl::Texture target_, difference_, picture_;
   std::unique_ptr<gl::Framebuffer> framebuffer_;
   gl::GlHandle<gl::delete_vertex_array> vao_;
   gl::Sampler nearest_;

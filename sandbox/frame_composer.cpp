@@ -27,6 +27,11 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
                                          in.viewer.zoom.zoom);
         !s)
       return s;
+  } else if (comparing && in.compare.view == CompareState::View::error && in.compare.show_classes &&
+             in.compare.classes.width == in.width && in.compare.classes.height == in.height) {
+    if (Status s = display.upload_picture(metrics::pixel_class_image(in.compare.classes)); !s) return s;
+    base.texture = &display.picture_texture();
+    if (Status s = display.draw(base); !s) return s;
   } else if (comparing && in.compare.view == CompareState::View::error) {
     gl::Texture* a = in.primary.executor().resource(technique::kShadowMask);
     gl::Texture* b = in.secondary->executor().resource(technique::kShadowMask);

@@ -234,8 +234,9 @@ void parse_body(ScriptStep& s, const json& v) {
         s.compare.enabled = true;
         s.compare.with = v.get<std::string>();
       } else {
-        only_keys(v, {"enabled", "with", "view", "three_way"}, "compare");
+        only_keys(v, {"enabled", "with", "view", "three_way", "classes"}, "compare");
         if (v.contains("three_way")) s.compare.three_way = need_bool(v["three_way"], "compare.three_way");
+        if (v.contains("classes")) s.compare.classes = need_bool(v["classes"], "compare.classes");
         s.compare.enabled = !v.contains("enabled") || need_bool(v["enabled"], "compare.enabled");
         if (v.contains("with")) s.compare.with = need_string(v["with"], "compare.with");
         if (v.contains("view")) {

@@ -51,6 +51,7 @@ struct CompareStep {
   std::string with;  // technique to compare against; empty = "reference" if registered, else the next one
   std::string view;  // "split" | "error"; empty = unchanged
   std::optional<bool> three_way;  // A | B | reference
+  std::optional<bool> classes;    // the error view shows the pixel classes instead of the error
 };
 
 struct ViewStep {

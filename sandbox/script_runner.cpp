@@ -102,6 +102,7 @@ Status ScriptRunner::run(const ScriptStep& step, SandboxController& c) {
         if (Status s = c.set_three_way(*step.compare.three_way && step.compare.enabled); !s) return s;
       if (step.compare.view == "split") c.set_compare_view(CompareState::View::split);
       if (step.compare.view == "error") c.set_compare_view(CompareState::View::error);
+      if (step.compare.classes) c.compare().show_classes = *step.compare.classes;
       return {};
     case StepKind::view: {
       if (Status s = c.view_resource(step.view.resource); !s) return s;

@@ -410,7 +410,14 @@ void compare_panel(SandboxController& c, UiState& ui) {
     ImGui::SliderFloat("split", &cs.split, 0.0f, cs.three_way ? cs.split2 : 1.0f);
     if (cs.three_way) ImGui::SliderFloat("split 2", &cs.split2, cs.split, 1.0f);
   }
-  else ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "A - B = +-%.2f is full colour");
+  else {
+    ImGui::SliderFloat("error scale", &cs.error_max, 0.01f, 1.0f, "A - B = +-%.2f is full colour");
+    ImGui::Checkbox("pixel classes", &cs.show_classes);
+    probe_item(ui.probe, "pixel classes");
+    tooltip("what the statistics are split by, from A's G-buffer and B's mask: white lit, black umbra, "
+            "orange soft penumbra (penumbra RMSE), blue geometric edge (2 px of a depth or normal "
+            "discontinuity or a terminator: its own RMSE), grey background");
+  }
   ImGui::SliderInt("stats every", &cs.stats_every, 1, 120, "%d frames");
   const std::string progress = progress_text(c);
   if (!progress.empty()) {
@@ -420,9 +427,11 @@ void compare_panel(SandboxController& c, UiState& ui) {
   }
   if (cs.stats) {
     ImGui::Text("RMSE %.4f   penumbra RMSE %s", cs.stats->rmse, penumbra_rmse_text(*cs.stats).c_str());
-    tooltip("penumbra RMSE: over pixels where the right-hand side (the reference) is in 0.02..0.98; "
-            "n/a when it has none (e.g. against hard shadows)");
-    ImGui::Text("MAE %.4f   max %.3f   %zu px (%zu penumbra)", cs.stats->mae, cs.stats->max_error,
+    tooltip("penumbra RMSE: over the soft penumbra, pixels where the right-hand side (the reference) is in "
+            "0.02..0.98 away from geometric edges; n/a when it has none (e.g. against hard shadows); "
+            "unreliable under 1% of the receivers or mostly single pixels (docs/evaluation.md)");
+    ImGui::Text("geometric edge RMSE %.4f (%zu px)", cs.stats->rmse_geometric_edge, cs.stats->geometric_edge_pixels);
+    ImGui::Text("MAE %.4f   max %.3f   %zu px (%zu soft penumbra)", cs.stats->mae, cs.stats->max_error,
                 cs.stats->pixels, cs.stats->penumbra_pixels);
   }
   if (cs.stats_b && c.reference_session())

@@ -65,6 +65,7 @@ Status write_ui_state(const std::string& path, SandboxController& c, const UiSta
   const CompareState& cs = c.compare();
   j["compare"] = {{"enabled", cs.enabled}, {"view", cs.view == CompareState::View::split ? "split" : "error"},
                   {"split", cs.split}, {"split2", cs.split2}, {"three_way", c.reference_session() != nullptr},
+                  {"classes", cs.show_classes},
                   {"with", c.secondary() ? c.secondary()->technique() : ""},
                   {"stats", cs.stats ? json{{"rmse", cs.stats->rmse}} : json(nullptr)},
                   {"stats_b", cs.stats_b ? json{{"rmse", cs.stats_b->rmse}} : json(nullptr)}};

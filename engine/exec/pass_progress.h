@@ -18,7 +18,8 @@ struct PassProgress {
   std::int64_t done = 0;
   std::int64_t total = 0;
   std::uint64_t restarts = 0;  // times the pass discarded its work because an input changed
-  bool complete() const { return total > 0 && done >= total; }
+  // Nothing to do is done: a ray trace of a frame with no receiver (total 0) is complete.
+  bool complete() const { return done >= total; }
   double fraction() const { return total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 0.0; }
 };
 

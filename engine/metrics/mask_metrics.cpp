@@ -85,8 +85,18 @@ Result<double> masked_ssim(const MaskImage& a, const MaskImage& b, const Coverag
 
 Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& ref, const CoverageMask& coverage) {
   if (Status s = check_sizes(test, ref, coverage); !s) return s.error();
+  return compare_masks(test, ref, coverage, classify_pixels(ref, coverage));
+}
+
+Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& ref, const CoverageMask& coverage,
+                                 const PixelClasses& classes) {
+  if (Status s = check_sizes(test, ref, coverage); !s) return s.error();
+  if (classes.classes.size() != ref.pixels.size())
+    return make_error("pixel classes of " + std::to_string(classes.width) + "x" + std::to_string(classes.height) +
+                          " for masks of " + std::to_string(ref.width) + "x" + std::to_string(ref.height),
+                      ErrorKind::internal);
   MaskErrors e;
-  double sq = 0.0, abs_sum = 0.0, sq_pen = 0.0;
+  double sq = 0.0, abs_sum = 0.0, sq_pen = 0.0, sq_geo = 0.0;
   for (size_t i = 0; i < ref.pixels.size(); ++i) {
     if (!coverage.empty() && !coverage[i]) continue;
     const double d = static_cast<double>(test.pixels[i]) - static_cast<double>(ref.pixels[i]);
@@ -94,9 +104,12 @@ Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& ref, co
     abs_sum += std::abs(d);
     e.max_error = std::max(e.max_error, std::abs(d));
     ++e.pixels;
-    if (ref.pixels[i] > kPenumbraLow && ref.pixels[i] < kPenumbraHigh) {
+    if (classes.classes[i] == PixelClass::soft_penumbra) {
       sq_pen += d * d;
       ++e.penumbra_pixels;
+    } else if (classes.classes[i] == PixelClass::geometric_edge) {
+      sq_geo += d * d;
+      ++e.geometric_edge_pixels;
     }
   }
   if (e.pixels) {
@@ -104,6 +117,8 @@ Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& ref, co
     e.mae = abs_sum / static_cast<double>(e.pixels);
   }
   if (e.penumbra_pixels) e.rmse_penumbra = std::sqrt(sq_pen / static_cast<double>(e.penumbra_pixels));
+  if (e.geometric_edge_pixels) e.rmse_geometric_edge = std::sqrt(sq_geo / static_cast<double>(e.geometric_edge_pixels));
+  e.reliability = penumbra_reliability(classes);
   Result<double> ssim = masked_ssim(test, ref, coverage);
   if (!ssim) return ssim.error();
   e.ssim = *ssim;

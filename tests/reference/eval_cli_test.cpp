@@ -62,10 +62,13 @@ TEST(EvalCli, WritesTheJsonSchemaAndHeatMaps) {
   EXPECT_EQ(j["reference"], "raytraced");
   ASSERT_EQ(j["rows"].size(), 2u);
   for (const auto& row : j["rows"]) {
-    for (const char* k : {"rmse", "rmse_penumbra", "mae", "max_error", "ssim", "edge_error", "gpu_ms"}) {
+    for (const char* k : {"rmse", "rmse_penumbra", "penumbra_pixels", "rmse_geometric_edge", "geometric_edge_pixels",
+                          "mae", "max_error", "ssim", "edge_error", "gpu_ms"}) {
       ASSERT_TRUE(row.contains(k)) << k;
       EXPECT_TRUE(row[k].is_number()) << k;
     }
+    EXPECT_TRUE(row["penumbra_reliable"].is_boolean());
+    EXPECT_TRUE(row["penumbra_unreliable_because"].is_string());
     EXPECT_GE(row["rmse"].get<double>(), 0.0);
     EXPECT_LE(row["ssim"].get<double>(), 1.0);
   }
@@ -74,10 +77,12 @@ TEST(EvalCli, WritesTheJsonSchemaAndHeatMaps) {
   EXPECT_GT(j["rows"][0]["rmse_penumbra"].get<double>(), j["rows"][1]["rmse_penumbra"].get<double>());
   EXPECT_TRUE(fs::exists(d / "heat" / "ball_hard_error.png"));
   EXPECT_TRUE(fs::exists(d / "heat" / "ball_reference_error.png"));
+  EXPECT_TRUE(fs::exists(d / "heat" / "ball_classes.png")) << "the pixel classes the columns count";
 }
 
 // --light-size 0 makes the reference the exact hard shadow (one ray per pixel): binary, so it has
-// no penumbra pixels, and a coarse hard shadow map differs from it along the edges.
+// no soft penumbra (its RMSE is not applicable: null, not 0, and the row unreliable), and a coarse
+// hard shadow map differs from it along the edges; the geometric-edge column still counts.
 TEST(EvalCli, LightSizeZeroGivesTheExactHardReference) {
   const fs::path d = out_dir();
   const fs::path hard = d / "hard.json";
@@ -87,7 +92,12 @@ TEST(EvalCli, LightSizeZeroGivesTheExactHardReference) {
   const nlohmann::json h = nlohmann::json::parse(std::ifstream(hard));
   const nlohmann::json& row = h["rows"][0];
   EXPECT_GT(row["edge_error"].get<double>(), 0.0);  // a 64^2 map's staircase along the edges
-  EXPECT_EQ(row["rmse_penumbra"].get<double>(), 0.0);  // a hard reference has no penumbra pixels
+  EXPECT_TRUE(row["rmse_penumbra"].is_null()) << row.dump();
+  EXPECT_EQ(row["penumbra_pixels"], 0);
+  EXPECT_EQ(row["penumbra_reliable"], false);
+  EXPECT_EQ(row["penumbra_unreliable_because"], "no soft penumbra");
+  EXPECT_GT(row["geometric_edge_pixels"].get<int>(), 0);
+  EXPECT_TRUE(row["rmse_geometric_edge"].is_number());
   EXPECT_EQ(run_eval("--scene ball --techniques hard --light-size -1").code, 2);
 }
 

@@ -312,6 +312,38 @@ TEST_F(Fixture, CompareSameSettingsHasZeroErrorAndDifferentHasSome) {
   EXPECT_TRUE(controller->render_frame());
 }
 
+// The error view's pixel classes: pcss against pcf on the ball, the classes computed from the
+// primary's G-buffer and the right-hand mask (pcf's). The picture holds the classes' colours in
+// the proportions the statistics counted: orange for the soft penumbra, blue for geometric edges.
+TEST_F(Fixture, TheErrorViewShowsThePixelClassesTheStatisticsCount) {
+  ASSERT_TRUE(controller->set_technique("pcss"));
+  controller->compare().stats_every = 1;
+  ASSERT_TRUE(controller->set_compare(true, "pcf"));
+  controller->set_compare_view(CompareState::View::error);
+  controller->compare().show_classes = true;
+  ASSERT_TRUE(controller->render_frame());
+  ASSERT_TRUE(controller->render_frame());  // the classes of the first read-back are drawn
+  const CompareState& cs = controller->compare();
+  ASSERT_TRUE(cs.stats.has_value()) << cs.stats_error;
+  ASSERT_GT(cs.stats->geometric_edge_pixels, 0u) << "the ball's outline and the horizon";
+  ASSERT_GT(cs.stats->penumbra_pixels, 0u);
+  const std::string path = temp("classes.png").string();
+  ASSERT_TRUE(controller->save_presentation_png(path));
+  int w = 0, h = 0, n = 0;
+  unsigned char* px = stbi_load(path.c_str(), &w, &h, &n, 3);
+  ASSERT_NE(px, nullptr);
+  size_t orange = 0, blue = 0;
+  for (int i = 0; i < w * h; ++i) {
+    const unsigned char r = px[3 * i], g = px[3 * i + 1], b = px[3 * i + 2];
+    orange += r == 255 && g == 140 && b == 0;
+    blue += r == 40 && g == 90 && b == 255;
+  }
+  stbi_image_free(px);
+  std::filesystem::remove(path);
+  EXPECT_EQ(orange, cs.stats->penumbra_pixels);
+  EXPECT_EQ(blue, cs.stats->geometric_edge_pixels);
+}
+
 TEST_F(Fixture, UnknownTechniqueKeepsTheCurrentOne) {
   EXPECT_FALSE(controller->set_technique("no_such_technique"));
   EXPECT_EQ(controller->session().technique(), kTinyTechnique);

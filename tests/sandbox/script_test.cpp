@@ -17,7 +17,7 @@ TEST(Script, ParsesEveryStepKind) {
     {"camera": {"position": [0, 2, 6], "yaw": 10, "pitch": -15}},
     {"light": {"type": "spot", "direction": [-1, -2, -1], "size": 0.3}}, {"shadow_size": 1024},
     {"wait": 3}, {"screenshot": "a.png"}, {"compare": true}, {"compare": "reference"},
-    {"compare": {"view": "error"}}, {"view": {"resource": "gbuffer_depth", "map": "heat", "placement": "full"}},
+    {"compare": {"view": "error", "classes": true}}, {"view": {"resource": "gbuffer_depth", "map": "heat", "placement": "full"}},
     {"resize": [320, 200]}, {"expect_no_gl_error": true}])", "s.json");
   ASSERT_TRUE(steps) << steps.error().to_string();
   ASSERT_EQ(steps->size(), 15u);
@@ -40,6 +40,8 @@ TEST(Script, ParsesEveryStepKind) {
   EXPECT_TRUE(s[9].compare.enabled);
   EXPECT_EQ(s[10].compare.with, "reference");
   EXPECT_EQ(s[11].compare.view, "error");
+  EXPECT_EQ(s[11].compare.classes, true);
+  EXPECT_FALSE(s[10].compare.classes.has_value()) << "unchanged unless given";
   EXPECT_EQ(s[12].view.resource, "gbuffer_depth");
   EXPECT_EQ(s[12].view.placement, "full");
   EXPECT_EQ(s[13].width, 320);
@@ -87,6 +89,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScript{R"([{"set": {}}])", "step 0: set must be a non-empty object"},
         BadScript{R"([{"set": {"k": [1]}}])", "step 0: set: value of 'k' must be a boolean, number or string"},
         BadScript{R"([{"compare": {"view": "side"}}])", "step 0: compare.view must be"},
+        BadScript{R"([{"compare": {"classes": "yes"}}])", "compare.classes"},
         BadScript{R"([{"expect_no_gl_error": false}])", "step 0: expect_no_gl_error must be true"},
         BadScript{R"([{"ground": "yes"}])", "step 0: ground must be true or false"},
         BadScript{R"([{"camera": "orbit"}])", "step 0: camera must be \"fit\", \"file\""},
