@@ -16,6 +16,7 @@ bool has_ground(const Scene& scene) {
   // "At the bottom": within 2% of the larger of height and width above the lowest point.
   const float slab = 0.02f * std::max({extent.x, extent.y, extent.z});
   double floor_area = 0.0;
+  Bounds floor;  // of the floor triangles
   for (const Instance& inst : scene.instances) {
     if (inst.mesh >= scene.meshes.size()) continue;
     const Mesh& mesh = scene.meshes[inst.mesh];
@@ -35,10 +36,17 @@ bool has_ground(const Scene& scene) {
       if (!(twice_area > 0.0f)) continue;
       face /= twice_area;
       if (glm::dot(face, n_sum) < 0.0f) face = -face;  // the side the surface faces
-      if (face.y > 0.9f) floor_area += 0.5 * double(twice_area) * double(face.y);  // area seen from above
+      if (face.y > 0.9f) {
+        floor_area += 0.5 * double(twice_area) * double(face.y);  // area seen from above
+        for (const glm::vec3& q : p) floor.extend(q);
+      }
     }
   }
-  return floor_area >= kGroundCoverage * footprint;
+  // A floor under part of the model (a board with pieces lying beside it) leaves the rest resting
+  // on nothing: the floor must reach the model's footprint on every side.
+  const bool under_everything = !floor.empty() && floor.min.x <= b.min.x + slab && floor.max.x >= b.max.x - slab &&
+                                floor.min.z <= b.min.z + slab && floor.max.z >= b.max.z - slab;
+  return under_everything && floor_area >= kGroundCoverage * footprint;
 }
 
 size_t add_ground_plane(Scene& scene) {

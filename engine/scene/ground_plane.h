@@ -15,8 +15,9 @@ inline constexpr std::string_view kGroundPlaneName = "penumbra_ground";
 
 // True when upward-facing triangles (face normal within about 25 degrees of +Y, on the side the
 // vertex normals point to) lying at the bottom of the bounds cover at least kGroundCoverage of
-// the bounds' footprint (x-z area): a floor the model stands on, not the underside of a box or a
-// stand's small base.
+// the bounds' footprint (x-z area) and reach its edges on every side: a floor the whole model
+// stands on, not the underside of a box, a stand's small base, or a board with pieces lying
+// beside it on nothing.
 inline constexpr double kGroundCoverage = 0.6;
 bool has_ground(const Scene& scene);
 

@@ -124,6 +124,30 @@ TEST(Ground, FloorsAreFoundAndBoxesAreNot) {
   EXPECT_FALSE(scene::has_ground(floating_box(2.0f)));
 }
 
+// A mat on y = 0 (10 x 10) with a piece lying beside it (x = 6..7, on y = 0): the mat covers 83%
+// of the footprint but not its edge, so without a ground plane the piece would rest on nothing.
+// The same piece on the mat leaves the mat a ground.
+TEST(Ground, AFloorUnderOnlyPartOfTheModelIsNoGround) {
+  scene::Scene s;
+  s.materials.push_back({});
+  scene::Mesh m;
+  scene::build::add_ground(m, {0.0f, 0.0f, 0.0f}, 10.0f, 10.0f);  // x, z in -5..5
+  scene::build::add_box(m, {6.5f, 0.25f, 0.0f}, {0.5f, 0.25f, 0.5f});  // beside it, on y = 0
+  s.meshes.push_back(m);
+  s.instances.push_back({0, glm::mat4(1.0f)});
+  s.bounds = scene::compute_bounds(s);
+  EXPECT_FALSE(scene::has_ground(s)) << "the piece at x = 6..7 lies beyond the mat";
+  scene::Scene on_the_mat = s;
+  on_the_mat.meshes[0] = scene::Mesh{};
+  scene::build::add_ground(on_the_mat.meshes[0], {0.0f, 0.0f, 0.0f}, 10.0f, 10.0f);
+  scene::build::add_box(on_the_mat.meshes[0], {3.5f, 0.25f, 0.0f}, {0.5f, 0.25f, 0.5f});  // on the mat
+  on_the_mat.bounds = scene::compute_bounds(on_the_mat);
+  EXPECT_TRUE(scene::has_ground(on_the_mat));
+  s.source_file = "board.gltf";  // staged like a file: a plane goes under both
+  ASSERT_TRUE(scene::stage_scene(s, {}));
+  EXPECT_TRUE(scene::has_added_ground_plane(s));
+}
+
 TEST(Ground, PlaneGoesUnderTheModelAndCatchesItsShadow) {
   scene::Scene s = floating_box(1.0f);
   const scene::Bounds before = s.bounds;
