@@ -33,15 +33,15 @@ class LightViewPass final : public exec::PassImpl {
     if (!ctx.frame().shadow.unsupported.empty())
       return make_error(spec_.type_name + ": " + ctx.frame().shadow.unsupported, ErrorKind::bad_input);
     gl::Texture& depth = ctx.texture("depth");
-    std::vector<GLuint> attached{depth.id()};
-    for (const LightViewTarget& t : spec_.colour_targets) attached.push_back(ctx.texture(t.slot).id());
-    if (attached_ != attached) {
+    ids_.assign(1, depth.id());  // this frame's targets (no allocation after the first frame)
+    for (const LightViewTarget& t : spec_.colour_targets) ids_.push_back(ctx.texture(t.slot).id());
+    if (attached_ != ids_) {
       fb_ = gl::Framebuffer();
       fb_.attach_depth(depth);
       for (size_t i = 0; i < spec_.colour_targets.size(); ++i)
         fb_.attach_color(static_cast<int>(i), ctx.texture(spec_.colour_targets[i].slot));
       if (Status s = fb_.finish(); !s) return s;
-      attached_ = attached;
+      attached_ = ids_;
     }
     if (!ctx.frame().scene) {  // nothing casts: the map stays at the far plane, the targets clear
       depth.clear(1.0f);
@@ -60,7 +60,7 @@ class LightViewPass final : public exec::PassImpl {
   LightViewPassSpec spec_;
   std::vector<glm::vec4> clears_;
   gl::Framebuffer fb_;
-  std::vector<GLuint> attached_;
+  std::vector<GLuint> attached_, ids_;
 };
 
 std::vector<graph::Format> colour_formats() {
