@@ -67,6 +67,14 @@ void add_plain_mesh(GlbWriter& w, const scene::Mesh& m) {
   w.json["meshes"].push_back({{"primitives", json::array({prim})}});
 }
 
+// The mesh uncompressed, alone in a .glb: the twin a compressed file is compared with.
+void write_plain_twin(const scene::Mesh& m, const fs::path& file) {
+  GlbWriter plain;
+  add_plain_mesh(plain, m);
+  plain.scene_of_meshes();
+  plain.write(file);
+}
+
 // The Draco twin (KHR_draco_mesh_compression), sequential encoding so the triangles keep their
 // order; positions quantized to `position_bits`.
 std::vector<uint8_t> draco_stream(const scene::Mesh& m, int position_bits, int ids[3]) {
@@ -392,10 +400,7 @@ TEST(GltfMeshQuantization, IntegerAttributesAreDequantizedAsTheExtensionStates) 
 TEST(GltfMeshopt, DecodesToItsUncompressedTwin) {
   const fs::path dir = test::fresh_temp_dir("gltf_meshopt");
   const scene::Mesh m = caster();
-  GlbWriter plain;
-  add_plain_mesh(plain, m);
-  plain.scene_of_meshes();
-  plain.write(dir / "plain.glb");
+  write_plain_twin(m, dir / "plain.glb");
   GlbWriter packed;
   MeshoptTwin twin{packed};
   twin.add_mesh(m, "TRIANGLES");
@@ -422,10 +427,7 @@ TEST(GltfMeshopt, DecodesToItsUncompressedTwin) {
 TEST(GltfDraco, DecodesToItsUncompressedTwinWithinTheQuantizationError) {
   const fs::path dir = test::fresh_temp_dir("gltf_draco");
   const scene::Mesh m = caster();
-  GlbWriter plain;
-  add_plain_mesh(plain, m);
-  plain.scene_of_meshes();
-  plain.write(dir / "plain.glb");
+  write_plain_twin(m, dir / "plain.glb");
   int ids[3];
   const std::vector<uint8_t> stream = draco_stream(m, 16, ids);
   GlbWriter packed;
