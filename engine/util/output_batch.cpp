@@ -11,10 +11,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// At most three names of at most 60 characters: the message stays one readable line however many
+// outputs a command writes.
 std::string file_list(const std::vector<std::string>& paths) {
+  constexpr size_t kNames = 3, kChars = 60;
   std::string out;
-  for (size_t i = 0; i < paths.size() && i < 4; ++i) out += (i ? ", " : "") + shortened(paths[i], 80);
-  if (paths.size() > 4) out += " and " + std::to_string(paths.size() - 4) + " more";
+  for (size_t i = 0; i < paths.size() && i < kNames; ++i) out += (i ? ", " : "") + shortened(paths[i], kChars);
+  if (paths.size() > kNames) out += " and " + std::to_string(paths.size() - kNames) + " more";
   return out;
 }
 

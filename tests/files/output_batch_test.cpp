@@ -71,6 +71,23 @@ TEST(OutputBatch, ABatchGivenUpLeavesNothingItMadeAndKeepsWhatWasThere) {
   fs::remove_all(dir);
 }
 
+// However many outputs a command stages, the message names at most three (each at most 60
+// characters) and counts the rest, so it stays one line.
+TEST(OutputBatch, TheListOfOutputsNotWrittenStaysShort) {
+  const fs::path dir = test::fresh_temp_dir("batch_many");
+  OutputBatch batch;
+  const std::string long_name(120, 'n');
+  for (int i = 0; i < 7; ++i) {
+    Result<std::string> tmp = batch.staged((dir / (long_name + std::to_string(i) + ".png")).string());
+    ASSERT_TRUE(tmp);
+    ASSERT_TRUE(write_file_whole(*tmp, "x"));
+  }
+  const Error e = batch.not_written(make_error("the last output failed"));
+  EXPECT_NE(e.message.find("and 4 more"), std::string::npos) << e.message;
+  EXPECT_LT(e.message.size(), 300u) << e.message;
+  fs::remove_all(dir);
+}
+
 TEST(OutputBatch, AFileWhereTheFolderBelongsIsNamed) {
   const fs::path dir = test::fresh_temp_dir("batch_file_as_dir");
   std::ofstream(dir / "maps") << "x";
