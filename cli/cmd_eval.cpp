@@ -280,11 +280,10 @@ int cmd_eval(const std::vector<std::string>& argv) {
   metrics::PixelClasses classes;  // the frame's: the same for every technique
   for (const TechniqueSpec& t : o.techniques) {
     std::fprintf(stderr, "technique %s...\n", t.label.c_str());
-    auto evaluated = evaluate_technique(session, t, o.sets, *reference, kWarmupFrames, o.frames);
+    auto evaluated = evaluate_technique(session, t, o.sets, *reference, kWarmupFrames, o.frames, classes);
     if (!evaluated) return fail(evaluated.error());
     report.rows.push_back(evaluated->row);
     masks.push_back(std::move(evaluated->mask));
-    classes = std::move(evaluated->classes);
   }
   if (o.flicker) {
     if (Status s = measure_flicker(session, o, report); !s) return fail(s.error());

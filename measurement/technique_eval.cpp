@@ -12,9 +12,11 @@ namespace penumbra::measurement {
 
 Result<TechniqueEvaluation> evaluate_technique(technique::TechniqueSession& session, const TechniqueSpec& spec,
                                                const std::vector<std::string>& global_sets,
-                                               const ReferenceFrame& reference, int warmup, int frames) {
+                                               const ReferenceFrame& reference, int warmup, int frames,
+                                               metrics::PixelClasses& classes) {
   if (Status s = select_technique(session, spec, global_sets); !s) return s.error();
-  if (Status s = keep_alive(session, {"gbuffer_depth", "gbuffer_normal"}); !s) return s.error();  // pixel classes
+  if (classes.classes.empty())
+    if (Status s = keep_alive(session, {"gbuffer_depth", "gbuffer_normal"}); !s) return s.error();  // pixel classes
   // A progressive technique (the reference evaluated as a technique) runs to completion first. Its
   // first frame tells whether it is one (it reports progress) and counts as a warm-up frame.
   if (Status s = session.render(); !s) return s.error();
@@ -29,11 +31,12 @@ Result<TechniqueEvaluation> evaluate_technique(technique::TechniqueSession& sess
   if (!mask) return make_error("technique '" + spec.label + "' wrote no shadow_mask", ErrorKind::internal);
   TechniqueEvaluation out;
   out.mask = read_mask_image(*mask);
-  // The classes come from the reference and this frame's G-buffer, the same for every technique.
-  Result<metrics::ReceiverGeometry> geometry = read_receiver_geometry(session);
-  if (!geometry) return geometry.error();
-  out.classes = metrics::classify_pixels(reference.mask, reference.coverage, &*geometry);
-  auto errors = metrics::compare_masks(out.mask, reference.mask, reference.coverage, out.classes);
+  if (classes.classes.empty()) {
+    Result<metrics::ReceiverGeometry> geometry = read_receiver_geometry(session);
+    if (!geometry) return geometry.error();
+    classes = metrics::classify_pixels(reference.mask, reference.coverage, &*geometry);
+  }
+  auto errors = metrics::compare_masks(out.mask, reference.mask, reference.coverage, classes);
   if (!errors) return errors.error();
   out.row = {spec.label, *errors, 0.0};
   // The technique's own passes: everything but the frame's G-buffer prologue and lighting epilogue.

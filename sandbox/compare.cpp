@@ -54,6 +54,7 @@ void update_compare_stats(CompareState& state, technique::TechniqueSession& prim
                           technique::TechniqueSession& secondary, technique::TechniqueSession* reference) {
   // The secondary plays the reference, unless a third session runs it.
   Result<metrics::MaskErrors> e = mask_errors(primary, reference ? *reference : secondary, state.classes);
+  ++state.classes_version;
   if (!e) {
     state.stats_error = e.error().to_string();
     return;

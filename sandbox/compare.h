@@ -30,6 +30,7 @@ struct CompareState {
   // (metrics/pixel_classes.h: A's G-buffer and the reference side's mask).
   bool show_classes = false;
   metrics::PixelClasses classes;    // of the last read-back
+  unsigned classes_version = 0;     // counts read-backs: the display re-uploads the picture on change
   int stats_every = 10;             // frames between RMSE read-backs
   std::optional<metrics::MaskErrors> stats;  // primary vs secondary (secondary as reference)
   std::string stats_error;

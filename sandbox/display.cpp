@@ -133,7 +133,7 @@ Status DisplayPass::difference(const gl::Texture& a, const gl::Texture& b, const
   return {};
 }
 
-Status DisplayPass::upload_picture(const metrics::RgbaImage& image) {
+Status DisplayPass::upload_picture(const metrics::RgbaImage& image, unsigned version) {
   if (image.width != target_.width() || image.height != target_.height())
     return make_error("a picture of " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                           " for a frame of " + std::to_string(target_.width()) + "x" + std::to_string(target_.height()),
@@ -143,6 +143,7 @@ Status DisplayPass::upload_picture(const metrics::RgbaImage& image) {
     picture_.set_label("sandbox_picture");
   }
   picture_.upload_bytes(rows_flipped(image.pixels, static_cast<size_t>(image.width) * 4, image.height).data());
+  picture_version_ = version;
   return {};
 }
 

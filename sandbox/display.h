@@ -73,8 +73,10 @@ class DisplayPass {
   // difference.r = |a.r - b.r|, difference.g = receiver coverage (gbuffer_depth > 0).
   Status difference(const gl::Texture& a, const gl::Texture& b, const gl::Texture& depth);
   const gl::Texture& difference_texture() const { return difference_; }
-  // A CPU picture of the frame's size (rows top to bottom), e.g. the pixel classes, as a texture.
-  Status upload_picture(const metrics::RgbaImage& image);
+  // A CPU picture of the frame's size (rows top to bottom), e.g. the pixel classes, as a texture;
+  // `version` names the picture: the same version again uploads nothing.
+  Status upload_picture(const metrics::RgbaImage& image, unsigned version);
+  unsigned picture_version() const { return picture_version_; }
   const gl::Texture& picture_texture() const { return picture_; }
 
   exec::ShaderCache& shaders() { return shaders_; }
@@ -84,6 +86,7 @@ class DisplayPass {
   gl::Buffer frame_uniforms_;  // the camera for texel_density (exec/frame_uniforms.h)
   exec::ShaderCache shaders_;
   gl::Texture target_, difference_, picture_;
+  unsigned picture_version_ = 0;
   std::unique_ptr<gl::Framebuffer> framebuffer_;
   gl::GlHandle<gl::delete_vertex_array> vao_;
   gl::Sampler nearest_;

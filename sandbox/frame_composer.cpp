@@ -29,7 +29,9 @@ Status compose_frame(DisplayPass& display, const FrameInputs& in) {
       return s;
   } else if (comparing && in.compare.view == CompareState::View::error && in.compare.show_classes &&
              in.compare.classes.width == in.width && in.compare.classes.height == in.height) {
-    if (Status s = display.upload_picture(metrics::pixel_class_image(in.compare.classes)); !s) return s;
+    if (display.picture_version() != in.compare.classes_version || !display.picture_texture())
+      if (Status s = display.upload_picture(metrics::pixel_class_image(in.compare.classes), in.compare.classes_version); !s)
+        return s;
     base.texture = &display.picture_texture();
     if (Status s = display.draw(base); !s) return s;
   } else if (comparing && in.compare.view == CompareState::View::error) {

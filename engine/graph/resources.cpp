@@ -60,6 +60,13 @@ std::uint64_t tile_list_bytes(int tiles_x, int tiles_y) {
 int bytes_per_texel(Format format) { return kFormats[static_cast<int>(format)].bytes; }
 int channel_count(Format format) { return kFormats[static_cast<int>(format)].channels; }
 bool is_depth_format(Format format) { return format == Format::DEPTH32F; }
+
+std::vector<Format> colour_formats() {
+  std::vector<Format> out;
+  for (const auto& f : kFormats)
+    if (!is_depth_format(f.format)) out.push_back(f.format);
+  return out;
+}
 const char* image_format_qualifier(Format format) { return kFormats[static_cast<int>(format)].image_qualifier; }
 
 std::string format_names() {

@@ -24,6 +24,8 @@ std::string format_names();  // "R8, R16F, ...": every format, for messages
 int bytes_per_texel(Format format);
 int channel_count(Format format);
 bool is_depth_format(Format format);
+// Every format but the depth ones: what a colour attachment or an image may be.
+std::vector<Format> colour_formats();
 // The GLSL image format layout qualifier of the format ("r16f", "rgb10_a2"); "" for depth
 // formats, which image load/store cannot use.
 const char* image_format_qualifier(Format format);

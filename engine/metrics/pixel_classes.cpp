@@ -7,8 +7,7 @@
 namespace penumbra::metrics {
 namespace {
 
-// A discontinuity between receiver pixels a and b (neighbours along one axis), or at a when b is
-// background.
+// Discontinuities between neighbouring receiver pixels a and b.
 bool normal_crease(const ReceiverGeometry& g, size_t a, size_t b) {
   return glm::dot(g.normals[a], g.normals[b]) < kNormalCreaseCos;
 }

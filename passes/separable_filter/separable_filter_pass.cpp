@@ -27,12 +27,6 @@ std::string mode_define(const std::string& mode) {
   return std::to_string(std::find(m.begin(), m.end(), mode) - m.begin());
 }
 
-std::vector<Format> colour_formats() {
-  std::vector<Format> out;
-  for (int i = 0; i < graph::kFormatCount; ++i)
-    if (!graph::is_depth_format(static_cast<Format>(i))) out.push_back(static_cast<Format>(i));
-  return out;
-}
 
 // radius_uv > 0 sizes the filter in the UV of a texture covering the shadow map (pm-CHSS's min filter covers
 // the blocker search region, "region of max penumbra size", section 2.3): ceil(radius_uv x
@@ -78,9 +72,9 @@ exec::PassType separable_filter_pass_type() {
   using graph::real_param;
   return exec::PassDeclBuilder("separable_filter")
       .describe("One axis of a gaussian / box / min / max / depth-bilateral filter, any colour format (compute)")
-      .sampled("input", colour_formats())
+      .sampled("input", graph::colour_formats())
       .sampled("depth", {Format::R16F, Format::R32F, Format::DEPTH32F}, false)
-      .image_out("output", colour_formats())
+      .image_out("output", graph::colour_formats())
       .same_size({"input", "output", "depth"})
       .param(enum_param("mode", "gaussian", modes(), "Filter kind (bilateral needs the depth slot)"))
       .param(enum_param("axis", "x", {"x", "y"}, "Filter direction"))

@@ -63,12 +63,6 @@ class LightViewPass final : public exec::PassImpl {
   std::vector<GLuint> attached_, ids_;
 };
 
-std::vector<graph::Format> colour_formats() {
-  std::vector<graph::Format> out;
-  for (int i = 0; i < graph::kFormatCount; ++i)
-    if (!graph::is_depth_format(static_cast<graph::Format>(i))) out.push_back(static_cast<graph::Format>(i));
-  return out;
-}
 
 }  // namespace
 
@@ -96,7 +90,7 @@ void render_depth_map(const gl::Framebuffer& target, const gl::Program& program,
 exec::PassType light_view_pass_type(LightViewPassSpec spec) {
   exec::PassDeclBuilder b(spec.type_name);
   b.describe(spec.description).imported("scene").imported("light").depth_out("depth");
-  for (const LightViewTarget& t : spec.colour_targets) b.color_out(t.slot, t.formats.empty() ? colour_formats() : t.formats);
+  for (const LightViewTarget& t : spec.colour_targets) b.color_out(t.slot, t.formats.empty() ? graph::colour_formats() : t.formats);
   std::vector<std::string> same{"depth"};
   for (const LightViewTarget& t : spec.colour_targets) same.push_back(t.slot);
   if (same.size() > 1) b.same_size(same);
