@@ -15,9 +15,17 @@ metrics::MaskImage traced_reference(const scene::Scene& scene, const RenderedFra
                                      frame.mask.height, {.samples = samples}, frame.coverage);
 }
 
-double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference,
-                     const metrics::CoverageMask& coverage) {
-  Result<metrics::MaskErrors> e = metrics::compare_masks(mask, reference, coverage);
+double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference, const RenderedFrame& frame) {
+  const metrics::PixelClasses classes = metrics::classify_pixels(reference, frame.coverage, &frame.geometry);
+  if (classes.classes.empty()) {
+    ADD_FAILURE() << "the reference and the frame's coverage or geometry differ in size";
+    return 1.0;
+  }
+  if (classes.count(metrics::PixelClass::soft_penumbra) == 0) {
+    ADD_FAILURE() << "the frame has no soft penumbra to judge";
+    return 1.0;
+  }
+  Result<metrics::MaskErrors> e = metrics::compare_masks(mask, reference, frame.coverage, classes);
   EXPECT_TRUE(e) << (e ? "" : e.error().to_string());
   return e ? e->rmse_penumbra : 1.0;
 }

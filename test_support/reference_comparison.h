@@ -1,6 +1,7 @@
 #pragma once
 // A rendered frame against the truth: the ray-traced reference (Embree, techniques/reference) of
-// the frame's own G-buffer, and the penumbra RMSE of any mask against it. With the built-in
+// the frame's own G-buffer, and the penumbra RMSE of any mask against it (the measure of
+// `penumbra eval`'s "RMSE penumbra" column: the soft penumbra of the frame's pixel classes). With the built-in
 // techniques registered beside a plugin, a plugin's test states "nearer the truth than PCF":
 //
 //   TechniqueRig rig({.techniques = penumbra::register_builtin_techniques,  // Penumbra::techniques
@@ -8,7 +9,7 @@
 //   const scene::Scene s = builtin_scene("ball");
 //   RenderedFrame mine = rig.render_frame(s, "msm"), pcf = rig.render_frame(s, "pcf");
 //   metrics::MaskImage truth = traced_reference(s, mine);
-//   EXPECT_LT(penumbra_rmse(mine.mask, truth, mine.coverage), penumbra_rmse(pcf.mask, truth, pcf.coverage));
+//   EXPECT_LT(penumbra_rmse(mine.mask, truth, mine), penumbra_rmse(pcf.mask, truth, mine));
 #include "metrics/mask_image.h"
 #include "scene/scene.h"
 #include "test_support/technique_rig.h"
@@ -19,9 +20,10 @@ namespace penumbra::test {
 // frame's receivers; 1 off them. Rows top to bottom, like the frame's mask.
 metrics::MaskImage traced_reference(const scene::Scene& scene, const RenderedFrame& frame, int samples = 256);
 
-// Penumbra RMSE (metrics::compare_masks: pixels the reference puts strictly between lit and
-// umbra) of `mask` against `reference` over `coverage`; fails the test and returns 1 on error.
-double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference,
-                     const metrics::CoverageMask& coverage);
+// Penumbra RMSE of `mask` against `reference` over the soft penumbra (metrics/pixel_classes.h:
+// the reference strictly between lit and umbra, away from the geometric edges of `frame`, the
+// frame both masks are of). Fails the test and returns 1 on error or when the frame has no soft
+// penumbra to judge.
+double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference, const RenderedFrame& frame);
 
 }  // namespace penumbra::test

@@ -87,6 +87,7 @@ RenderedFrame TechniqueRig::render_frame(const scene::Scene& scene, const std::s
   f.technique_ms = technique_ms(&f.pass_ms);
   f.mask = shadow_mask();
   gbuffer(f.positions, f.normals, f.coverage);
+  f.geometry = metrics::receiver_geometry(f.mask.width, f.mask.height, positions(), f.normals, session_->light());
   return f;
 }
 

@@ -22,6 +22,7 @@
 #include <glm/glm.hpp>
 
 #include "metrics/mask_image.h"
+#include "metrics/pixel_classes.h"
 #include "technique/technique_session.h"
 #include "scene/scene.h"
 #include "test_support/read_back.h"
@@ -49,6 +50,9 @@ struct RenderedFrame {
   std::vector<glm::vec3> positions;  // world; (0, 0, 0) where coverage is 0
   std::vector<glm::vec3> normals;
   metrics::CoverageMask coverage;    // gbuffer_depth > 0: receivers
+  // The receivers' view depth, normals and facing towards the light (metrics::receiver_geometry):
+  // what the pixel classes of a penumbra metric need (reference_comparison.h).
+  metrics::ReceiverGeometry geometry;
   // Sum of the median times of the technique's own passes (all but gbuffer and lighting), ms:
   // GPU timestamps on a GPU, glFinish + a CPU clock on llvmpipe.
   double technique_ms = 0.0;

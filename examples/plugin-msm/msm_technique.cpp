@@ -15,17 +15,22 @@ using penumbra::graph::Format;
 class MaskPass final : public penumbra::exec::PassImpl {
  public:
   Status execute(PassContext& ctx) override {
-    penumbra::gl::ShaderProgram& p = ctx.program({.compute = "msm/msm_mask.comp.glsl"});
+    const bool contact_hardening = ctx.bound("moments_wide");
+    penumbra::gl::ShaderProgram& p = ctx.program(
+        {.compute = "msm/msm_mask.comp.glsl", .defines = {{"CONTACT_HARDENING", contact_hardening ? "1" : "0"}}});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_moments", "moments", bilinear_.id());  // the paper filters bilinearly too
+    if (contact_hardening) ctx.bind_sampled(p, "u_moments_wide", "moments_wide", bilinear_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame());
     p.program().set("u_to_canonical", kToCanonical);
     p.program().set("u_optimised_offset", kOptimisedOffset);
     p.program().set("u_moment_bias", ctx.real("moment_bias"));
     p.program().set("u_depth_bias", ctx.real("depth_bias"));
+    p.program().set("u_narrow_height", ctx.real("narrow_height"));
+    p.program().set("u_wide_height", ctx.real("wide_height"));
     ctx.dispatch_over(p, ctx.texture("mask"));
     return {};
   }
@@ -55,10 +60,14 @@ penumbra::exec::PassType mask_pass_type() {
       .sampled("depth", {Format::R32F})
       .sampled("normal", {Format::RG16})
       .sampled("moments", {Format::RGBA16, Format::RGBA32F})
+      .sampled("moments_wide", {Format::RGBA16, Format::RGBA32F}, false)
       .image_out("mask", {Format::R16F})
       .same_size({"depth", "mask"})
+      .same_size({"moments", "moments_wide"})
       .real("moment_bias", 6e-5, 0.0, 0.01, "", "alpha: moments pulled towards (0.5, ...) against rounding (paper, 16-bit)")
       .real("depth_bias", 0.0, 0.0, 0.05, "window depth", "subtracted from the receiver's light depth (acne)")
+      .real("narrow_height", 0.5, 0.0, 1000.0, "world units", "moments_wide bound: the edge height `moments` is filtered for")
+      .real("wide_height", 4.0, 0.0, 1000.0, "world units", "moments_wide bound: the edge height it is filtered for")
       .build<MaskPass>();
 }
 

@@ -64,6 +64,15 @@ float penumbra_width_uv(float d_r, float d_b) {
   return u_light_size_world * h / max(d_b, 1e-4) / (max(d_r, 1e-4) * u_light_frustum_width);
 }
 
+// Penumbra width (shadow-map UV) of an edge `height` world units above its receiver, for a
+// receiver at the middle of the light's depth range (where a spot light's UV scale is taken; a
+// directional light's does not depend on depth); an edge is at most as far from the receiver as
+// the light. Sizes a filter by the frame's light.
+float edge_penumbra_width_uv(float height) {
+  float d_r = 0.5 * (u_light_near + u_light_far);
+  return penumbra_width_uv(d_r, max(d_r - height, 1e-4));
+}
+
 // Width (shadow-map UV) of the region that can hold this receiver's blockers: the penumbra of
 // a blocker at the map's near plane, the farthest a blocker can be from the receiver.
 float blocker_search_width_uv(float d_r) { return penumbra_width_uv(d_r, u_light_near); }

@@ -9,7 +9,15 @@
 //   MODE 5 bilateral  gaussian times exp(-(d_i - d_0)^2 / (2 depth_sigma^2)), d from u_depth's
 //                     first channel: taps across a depth edge barely count
 // Taps outside the texture are clamped to the edge.
+// SIGMA_FROM_LIGHT 1 (gaussian, bilateral; u_input covers the shadow map): sigma is the standard
+// deviation of the frame light's penumbra across an edge u_penumbra_height above its receiver,
+// width / 4 (a disk's chord-length profile, the semicircle distribution of radius width / 2, has
+// that deviation), at most MAX_RADIUS / 3; radius ceil(3 sigma).
 #include "screen_pass.glsl"
+#if SIGMA_FROM_LIGHT
+#include "common/shadow_common.glsl"
+uniform float u_penumbra_height;  // world units
+#endif
 layout(IMAGE_FORMAT, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_input;
 uniform sampler2D u_depth;    // MODE 5 only, same size as u_input
@@ -23,18 +31,25 @@ void main() {
   ivec2 size = imageSize(u_output);
   if (any(greaterThanEqual(p, size))) return;
   vec4 result = texelFetch(u_input, p, 0);
+  int radius = u_radius;
+  float sigma = u_sigma;
+#if SIGMA_FROM_LIGHT
+  sigma = min(0.25 * edge_penumbra_width_uv(u_penumbra_height) * float(textureSize(u_input, 0).x),
+              float(MAX_RADIUS) / 3.0);
+  radius = int(ceil(3.0 * sigma));
+#endif
 #if MODE == 0 || MODE == 4 || MODE == 5
 #if MODE == 5
   float d0 = texelFetch(u_depth, p, 0).r;
 #endif
   vec4 sum = vec4(0.0);
   float weights = 0.0;
-  for (int i = -u_radius; i <= u_radius; ++i) {
+  for (int i = -radius; i <= radius; ++i) {
     ivec2 q = clamp(p + i * u_axis, ivec2(0), size - 1);
 #if MODE == 4
     float w = 1.0;
 #else
-    float w = exp(-float(i * i) / (2.0 * u_sigma * u_sigma));
+    float w = exp(-float(i * i) / (2.0 * sigma * sigma));
 #endif
 #if MODE == 5
     float dd = texelFetch(u_depth, q, 0).r - d0;
@@ -45,7 +60,7 @@ void main() {
   }
   result = sum / weights;  // the centre tap has weight 1: never 0
 #elif MODE == 1 || MODE == 2
-  for (int i = -u_radius; i <= u_radius; ++i) {
+  for (int i = -radius; i <= radius; ++i) {
     vec4 v = texelFetch(u_input, clamp(p + i * u_axis, ivec2(0), size - 1), 0);
 #if MODE == 1
     result = max(result, v);

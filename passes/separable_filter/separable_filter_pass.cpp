@@ -10,6 +10,7 @@
 #include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "graph/parameters.h"
+#include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
 namespace {
@@ -28,14 +29,17 @@ std::string mode_define(const std::string& mode) {
 }
 
 
+// The most taps each side, whichever parameter sizes the filter (MAX_RADIUS in the shader).
+constexpr int kMaxRadius = 16;
+
 // radius_uv > 0 sizes the filter in the UV of a texture covering the shadow map (pm-CHSS's min filter covers
 // the blocker search region, "region of max penumbra size", section 2.3): ceil(radius_uv x
-// scale x width) texels, 1..16.
+// scale x width) texels, 1..kMaxRadius.
 int radius_texels(exec::PassContext& ctx, int width) {
   const double uv = ctx.real("radius_uv");
   if (uv <= 0.0) return ctx.integer("radius");
   const double texels = std::ceil(uv * ctx.real("radius_uv_scale") * width);
-  return static_cast<int>(std::clamp(texels, 1.0, 16.0));
+  return static_cast<int>(std::clamp(texels, 1.0, double(kMaxRadius)));
 }
 
 class SeparableFilterPass final : public exec::PassImpl {
@@ -43,6 +47,9 @@ class SeparableFilterPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     const std::string& mode = ctx.enumeration("mode");
     const bool bilateral = mode == "bilateral";
+    // penumbra_height > 0: the shader sizes the gaussian from the frame's light (shadow_common.glsl).
+    const double penumbra_height = ctx.real("penumbra_height");
+    const bool sigma_from_light = penumbra_height > 0.0 && (mode == "gaussian" || bilateral);
     if (bilateral && !ctx.bound("depth"))
       return make_error("separable_filter: mode 'bilateral' weighs taps by depth: bind the 'depth' slot",
                         ErrorKind::bad_input);
@@ -50,7 +57,9 @@ class SeparableFilterPass final : public exec::PassImpl {
     gl::ShaderProgram& p = ctx.program(
         {.compute = "passes/separable_filter/separable_filter.comp.glsl",
          .defines = {{"MODE", mode_define(mode)},
-                     {"IMAGE_FORMAT", graph::image_format_qualifier(out.format())}}});
+                     {"IMAGE_FORMAT", graph::image_format_qualifier(out.format())},
+                     {"MAX_RADIUS", std::to_string(kMaxRadius)},
+                     {"SIGMA_FROM_LIGHT", sigma_from_light ? "1" : "0"}}});
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_input", "input");
     if (bilateral) ctx.bind_sampled(p, "u_depth", "depth");
@@ -59,6 +68,10 @@ class SeparableFilterPass final : public exec::PassImpl {
     p.program().set("u_radius", radius_texels(ctx, out.width()));
     p.program().set("u_sigma", ctx.real("sigma"));
     p.program().set("u_depth_sigma", ctx.real("depth_sigma"));
+    if (sigma_from_light) {
+      set_shadow_uniforms(p.program(), ctx.frame());
+      p.program().set("u_penumbra_height", static_cast<float>(penumbra_height));
+    }
     ctx.dispatch_over(p, out.width(), out.height());
     return {};
   }
@@ -79,7 +92,7 @@ exec::PassType separable_filter_pass_type() {
       .param(enum_param("mode", "gaussian", modes(), "Filter kind (bilateral needs the depth slot)"))
       .param(enum_param("axis", "x", {"x", "y"}, "Filter direction"))
       .required()
-      .param(int_param("radius", 3, 0, 16, "texels", "Taps each side (7x7 = radius 3)"))
+      .param(int_param("radius", 3, 0, kMaxRadius, "texels", "Taps each side (7x7 = radius 3)"))
       .param(real_param("sigma", 3.0, 0.1, 16.0, "texels", "Gaussian standard deviation (gaussian, bilateral)"))
       .param(real_param("depth_sigma", 0.01, 1e-6, 1e6, "depth units",
                         "Bilateral: a tap whose depth differs by this much weighs exp(-1/2) of a level one"))
@@ -87,6 +100,11 @@ exec::PassType separable_filter_pass_type() {
                         "When > 0 (a texture covering the shadow map): radius = ceil(radius_uv x "
                         "radius_uv_scale x width), 1..16 texels"))
       .param(real_param("radius_uv_scale", 1.0, 1.0, 2.0, "", "Multiplies radius_uv"))
+      .param(real_param("penumbra_height", 0.0, 0.0, 1000.0, "world units",
+                        "When > 0 (gaussian, bilateral; a texture covering the shadow map): sigma = the "
+                        "standard deviation of the frame light's penumbra across an edge this high above "
+                        "its receiver (width / 4), at most 16/3 texels, radius = ceil(3 sigma); overrides "
+                        "sigma and radius"))
       .build<SeparableFilterPass>();
 }
 

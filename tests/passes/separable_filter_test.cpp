@@ -1,12 +1,14 @@
 // The shared separable_filter pass on known texels (an upload pass before it): every mode's
 // values against the formula, every channel of a four-channel format, 16-bit UNORM and SNORM
 // textures (the output's image qualifier follows the texture), the bilateral mode stopping at a
-// depth edge, and a bilateral filter without its depth slot refused with the reason.
+// depth edge, a gaussian sized by the frame's light (penumbra_height) for directional and spot
+// lights, and a bilateral filter without its depth slot refused with the reason.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 #include <map>
+#include <vector>
 
 #include "exec/executor.h"
 #include "graph/builder.h"
@@ -29,8 +31,9 @@ struct FilterRun {
 };
 
 // One x-axis pass of separable_filter over `input` (and `depth` when given), read back.
+// The texture is input's size; `frame` carries the light (penumbra_height).
 FilterRun filter_x(Format format, const test::TextureImage& input, const std::map<std::string, graph::ParamValue>& params,
-             const test::TextureImage* depth = nullptr) {
+             const test::TextureImage* depth = nullptr, const exec::FrameInputs& frame = {}) {
   test::gl_context();
   exec::PassLibrary library;
   penumbra::register_shared_passes(library);
@@ -53,14 +56,14 @@ FilterRun filter_x(Format format, const test::TextureImage& input, const std::ma
   b.output(out);
   graph::GraphDesc g = b.build();
   graph::ParameterSet values(g.parameters);
-  auto plan = graph::compile(g, library.declarations(), values, {kW, kH, 8});
+  auto plan = graph::compile(g, library.declarations(), values, {input.width, input.height, 8});
   for (const graph::GraphError& e : plan.errors()) ADD_FAILURE() << e.to_string();
   if (!plan) return {make_error("no plan", ErrorKind::internal), {}};
   exec::ShaderCache shaders;
   exec::TexturePool pool;
   exec::Executor executor(library, shaders, pool);
   EXPECT_TRUE(executor.set_plan(std::move(*plan)));
-  FilterRun run{executor.execute(values, exec::FrameInputs{}), {}};
+  FilterRun run{executor.execute(values, frame), {}};
   if (run.status) run.out = test::read_texture(*executor.resource("out"));
   return run;
 }
@@ -98,6 +101,60 @@ TEST(SeparableFilter, GaussianWeightsAreTheNormalisedGaussian) {
     EXPECT_NEAR(r.out.at(4 + i, 0, 1), 2.0 * std::exp(-i * i / 2.0) / total, 1e-6) << "tap " << i;
   }
   EXPECT_EQ(r.out.at(1, 0, 0), 0.0f) << "beyond the radius";
+}
+
+// A unit impulse at `at` on a width x 1 one-channel row.
+test::TextureImage impulse(int width, int at) {
+  test::TextureImage t{width, 1, 1, std::vector<float>(size_t(width), 0.0f)};
+  t.texels[size_t(at)] = 1.0f;
+  return t;
+}
+
+// Checks that `run` spread impulse(41, 20) into the normalised gaussian of `sigma` texels over
+// ceil(3 sigma) taps each side, and nothing beyond.
+void expect_gaussian(const FilterRun& run, double sigma) {
+  ASSERT_TRUE(run.status) << run.status.error().to_string();
+  const int radius = int(std::ceil(3.0 * sigma));
+  double total = 0.0;
+  for (int i = -radius; i <= radius; ++i) total += std::exp(-i * i / (2.0 * sigma * sigma));
+  for (int i = -radius; i <= radius; ++i)
+    EXPECT_NEAR(run.out.at(20 + i, 0, 0), std::exp(-i * i / (2.0 * sigma * sigma)) / total, 1e-5) << "tap " << i;
+  if (20 + radius + 1 < run.out.width) EXPECT_EQ(run.out.at(20 + radius + 1, 0, 0), 0.0f) << "beyond the radius";
+}
+
+exec::FrameInputs frame_lit_by(float light_size, const scene::ShadowFrustum& shadow) {
+  exec::FrameInputs f;
+  f.light.size = light_size;
+  f.shadow = shadow;
+  return f;
+}
+
+TEST(SeparableFilter, PenumbraHeightSizesTheGaussianByTheFramesLight) {
+  const std::map<std::string, graph::ParamValue> params{
+      {"mode", std::string("gaussian")}, {"penumbra_height", 2.0}, {"radius", 1}, {"sigma", 0.5}};
+  // Directional, diameter 0.5, its emitter 1 unit away (no scene: set_shadow_uniforms' fallback), an
+  // orthographic map 10 units wide: an edge 2 units high casts a penumbra 2 x 0.5 / 1 = 1 unit wide, 0.1 of
+  // the map, 4.1 texels of this 41-texel row; sigma = width / 4, and radius and sigma are overridden.
+  expect_gaussian(filter_x(Format::R32F, impulse(41, 20), params, nullptr,
+                           frame_lit_by(0.5f, {.near_plane = 1.0f, .far_plane = 9.0f, .orthographic = true,
+                                               .width_world = 10.0f})),
+                  0.25 * 4.1);
+  // Spot, diameter 2, depth range 1..9, 1 unit wide at distance 1: the receiver at the middle (5), the
+  // edge at 3: 2 x 2 / 3 = 1.33 units wide at the receiver, where the map is 5 units wide: 0.267 of it.
+  expect_gaussian(filter_x(Format::R32F, impulse(41, 20), params, nullptr,
+                           frame_lit_by(2.0f, {.near_plane = 1.0f, .far_plane = 9.0f, .orthographic = false,
+                                               .tan_half_fov = 0.5f})),
+                  0.25 * 41.0 * (2.0 * 2.0 / 3.0) / 5.0);
+}
+
+TEST(SeparableFilter, PenumbraHeightsGaussianStopsAtTheLargestRadius) {
+  // The directional case above with a light 10 times larger and an edge 4 units high: 2 map widths (20
+  // texels of sigma); sigma stays 16 / 3 (radius 16).
+  expect_gaussian(filter_x(Format::R32F, impulse(41, 20), {{"mode", std::string("gaussian")}, {"penumbra_height", 4.0}},
+                           nullptr,
+                           frame_lit_by(5.0f, {.near_plane = 1.0f, .far_plane = 9.0f, .orthographic = true,
+                                               .width_world = 10.0f})),
+                  16.0 / 3.0);
 }
 
 TEST(SeparableFilter, MinAndMaxPerChannelOnSixteenBitNormalisedFormats) {
