@@ -217,6 +217,15 @@ float emitter_distance(const Light& light, const Bounds& bounds) {
   return std::max(d, std::max(light.radius(), 1e-3f));
 }
 
+float blocker_height_scale(const Light& light, const Bounds& bounds) {
+  if (bounds.empty()) return 1.0f;
+  const glm::vec3 to_centre = bounds.center() - light.position;
+  const glm::vec3 ray = light.type == LightType::point && glm::length(to_centre) > 0.0f ? glm::normalize(to_centre)
+                                                                                         : glm::normalize(light.direction);
+  const float height = std::max(bounds.max.y - bounds.min.y, 1e-6f);
+  return height / std::max(std::abs(ray.y), kGrazingRaySine);
+}
+
 std::vector<LightSample> light_samples(const Light& light, const Bounds& bounds, int count, uint32_t seed) {
   std::vector<LightSample> out;
   const glm::vec3 dir = glm::normalize(light.direction);

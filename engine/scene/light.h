@@ -117,6 +117,13 @@ glm::vec3 point_light_sample(const Light& light, const glm::vec2& disk, const gl
 // centre of `bounds`, never below the emitter radius. Spot lights: 0 (not used).
 float emitter_distance(const Light& light, const Bounds& bounds);
 
+// The scale of a scene's blocker heights: its height (the extent of `bounds` along +Y, up) along
+// the light's rays, height / |ray . Y| with |ray . Y| at least kGrazingRaySine: how far a ray
+// runs from the top of the scene to its floor. The ray is `direction`, or for a point light the
+// way from `position` to the bounds' centre. 1 for empty bounds.
+inline constexpr float kGrazingRaySine = 0.1f;
+float blocker_height_scale(const Light& light, const Bounds& bounds);
+
 // What a reference traces towards for each light sample (the same M stratified points as
 // light_sample_points): spot lights, the point itself (finite ray, `is_point` true);
 // directional lights, the unit direction from the light INTO the scene of that sample's

@@ -66,8 +66,10 @@ penumbra::exec::PassType mask_pass_type() {
       .same_size({"moments", "moments_wide"})
       .real("moment_bias", 6e-5, 0.0, 0.01, "", "alpha: moments pulled towards (0.5, ...) against rounding (paper, 16-bit)")
       .real("depth_bias", 0.0, 0.0, 0.05, "window depth", "subtracted from the receiver's light depth (acne)")
-      .real("narrow_height", 0.5, 0.0, 1000.0, "world units", "moments_wide bound: the edge height `moments` is filtered for")
-      .real("wide_height", 4.0, 0.0, 1000.0, "world units", "moments_wide bound: the edge height it is filtered for")
+      .real("narrow_height", 0.4, 0.0, 2.0, "of the scene's height along the light",
+            "moments_wide bound: the edge height `moments` is filtered for")
+      .real("wide_height", 1.0, 0.0, 2.0, "of the scene's height along the light",
+            "moments_wide bound: the edge height it is filtered for")
       .build<MaskPass>();
 }
 

@@ -14,6 +14,8 @@ uniform float u_shadow_texel;     // one shadow-map texel in UV (1 / shadow-map 
 uniform float u_light_emitter_distance; // directional: emitter plane to scene centre, world
                                         // units (scene::emitter_distance); angular diameter
                                         // of the sun-like emitter = size / this
+uniform float u_blocker_height_scale; // the scene's height along the light's rays, world units
+                                      // (scene::blocker_height_scale; 1 without a scene)
 
 // (shadow-map uv in [0,1], window depth in [0,1]) of a world position.
 vec3 shadow_coord(vec3 world) {

@@ -23,6 +23,7 @@ void set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
   p.set("u_shadow_texel", 1.0f / static_cast<float>(std::max(frame.shadow_size, 1)));
   p.set("u_light_emitter_distance",
         frame.scene ? scene::emitter_distance(frame.light, frame.scene->cpu().bounds) : 1.0f);
+  p.set("u_blocker_height_scale", frame.scene ? scene::blocker_height_scale(frame.light, frame.scene->cpu().bounds) : 1.0f);
 }
 
 }  // namespace penumbra::passes

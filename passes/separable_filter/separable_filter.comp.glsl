@@ -10,13 +10,14 @@
 //                     first channel: taps across a depth edge barely count
 // Taps outside the texture are clamped to the edge.
 // SIGMA_FROM_LIGHT 1 (gaussian, bilateral; u_input covers the shadow map): sigma is the standard
-// deviation of the frame light's penumbra across an edge u_penumbra_height above its receiver,
+// deviation of the frame light's penumbra across an edge u_penumbra_height x the scene's height
+// along the light's rays (u_blocker_height_scale) above its receiver,
 // width / 4 (a disk's chord-length profile, the semicircle distribution of radius width / 2, has
 // that deviation), at most MAX_RADIUS / 3; radius ceil(3 sigma).
 #include "screen_pass.glsl"
 #if SIGMA_FROM_LIGHT
 #include "common/shadow_common.glsl"
-uniform float u_penumbra_height;  // world units
+uniform float u_penumbra_height;  // a fraction of u_blocker_height_scale
 #endif
 layout(IMAGE_FORMAT, binding = 0) uniform writeonly image2D u_output;
 uniform sampler2D u_input;
@@ -34,7 +35,7 @@ void main() {
   int radius = u_radius;
   float sigma = u_sigma;
 #if SIGMA_FROM_LIGHT
-  sigma = min(0.25 * edge_penumbra_width_uv(u_penumbra_height) * float(textureSize(u_input, 0).x),
+  sigma = min(0.25 * edge_penumbra_width_uv(u_penumbra_height * u_blocker_height_scale) * float(textureSize(u_input, 0).x),
               float(MAX_RADIUS) / 3.0);
   radius = int(ceil(3.0 * sigma));
 #endif

@@ -100,11 +100,12 @@ exec::PassType separable_filter_pass_type() {
                         "When > 0 (a texture covering the shadow map): radius = ceil(radius_uv x "
                         "radius_uv_scale x width), 1..16 texels"))
       .param(real_param("radius_uv_scale", 1.0, 1.0, 2.0, "", "Multiplies radius_uv"))
-      .param(real_param("penumbra_height", 0.0, 0.0, 1000.0, "world units",
+      .param(real_param("penumbra_height", 0.0, 0.0, 2.0, "of the scene's height along the light",
                         "When > 0 (gaussian, bilateral; a texture covering the shadow map): sigma = the "
                         "standard deviation of the frame light's penumbra across an edge this high above "
-                        "its receiver (width / 4), at most 16/3 texels, radius = ceil(3 sigma); overrides "
-                        "sigma and radius"))
+                        "its receiver (width / 4; heights as a fraction of the scene's height along the "
+                        "light's rays, scene::blocker_height_scale, so a value suits a scene at any scale), "
+                        "at most 16/3 texels, radius = ceil(3 sigma); overrides sigma and radius"))
       .build<SeparableFilterPass>();
 }
 

@@ -119,7 +119,9 @@ void expect_gaussian(const FilterRun& run, double sigma) {
   for (int i = -radius; i <= radius; ++i) total += std::exp(-i * i / (2.0 * sigma * sigma));
   for (int i = -radius; i <= radius; ++i)
     EXPECT_NEAR(run.out.at(20 + i, 0, 0), std::exp(-i * i / (2.0 * sigma * sigma)) / total, 1e-5) << "tap " << i;
-  if (20 + radius + 1 < run.out.width) EXPECT_EQ(run.out.at(20 + radius + 1, 0, 0), 0.0f) << "beyond the radius";
+  if (20 + radius + 1 < run.out.width) {
+    EXPECT_EQ(run.out.at(20 + radius + 1, 0, 0), 0.0f) << "beyond the radius";
+  }
 }
 
 exec::FrameInputs frame_lit_by(float light_size, const scene::ShadowFrustum& shadow) {
@@ -132,8 +134,9 @@ exec::FrameInputs frame_lit_by(float light_size, const scene::ShadowFrustum& sha
 TEST(SeparableFilter, PenumbraHeightSizesTheGaussianByTheFramesLight) {
   const std::map<std::string, graph::ParamValue> params{
       {"mode", std::string("gaussian")}, {"penumbra_height", 2.0}, {"radius", 1}, {"sigma", 0.5}};
-  // Directional, diameter 0.5, its emitter 1 unit away (no scene: set_shadow_uniforms' fallback), an
-  // orthographic map 10 units wide: an edge 2 units high casts a penumbra 2 x 0.5 / 1 = 1 unit wide, 0.1 of
+  // No scene: heights are world units and the emitter is 1 unit away (set_shadow_uniforms' fallbacks;
+  // a scene's scale is scene::blocker_height_scale, tested in tests/scene). Directional, diameter 0.5,
+  // an orthographic map 10 units wide: an edge 2 units high casts a penumbra 2 x 0.5 / 1 = 1 unit wide, 0.1 of
   // the map, 4.1 texels of this 41-texel row; sigma = width / 4, and radius and sigma are overridden.
   expect_gaussian(filter_x(Format::R32F, impulse(41, 20), params, nullptr,
                            frame_lit_by(0.5f, {.near_plane = 1.0f, .far_plane = 9.0f, .orthographic = true,
@@ -148,11 +151,11 @@ TEST(SeparableFilter, PenumbraHeightSizesTheGaussianByTheFramesLight) {
 }
 
 TEST(SeparableFilter, PenumbraHeightsGaussianStopsAtTheLargestRadius) {
-  // The directional case above with a light 10 times larger and an edge 4 units high: 2 map widths (20
+  // The directional case above with a light 20 times larger and an edge 2 units high: 2 map widths (20
   // texels of sigma); sigma stays 16 / 3 (radius 16).
-  expect_gaussian(filter_x(Format::R32F, impulse(41, 20), {{"mode", std::string("gaussian")}, {"penumbra_height", 4.0}},
+  expect_gaussian(filter_x(Format::R32F, impulse(41, 20), {{"mode", std::string("gaussian")}, {"penumbra_height", 2.0}},
                            nullptr,
-                           frame_lit_by(5.0f, {.near_plane = 1.0f, .far_plane = 9.0f, .orthographic = true,
+                           frame_lit_by(10.0f, {.near_plane = 1.0f, .far_plane = 9.0f, .orthographic = true,
                                                .width_world = 10.0f})),
                   16.0 / 3.0);
 }

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "scene/light.h"
 #include "scene/scene.h"
 
@@ -113,4 +115,21 @@ TEST(LightSamples, PointLightDiskFacesTheReceiver) {
   l.size = 0.0f;  // a zero-size point light is exactly its position
   EXPECT_EQ(scene::point_light_sample(l, {0.5f, 0.5f}, {1, 1, 1}), l.position);
   EXPECT_STREQ(scene::light_type_name(scene::LightType::point), "point");
+}
+
+TEST(BlockerHeightScale, TheScenesHeightAlongTheLightsRays) {
+  scene::Bounds b;
+  b.extend(glm::vec3(-5, 1, -5));
+  b.extend(glm::vec3(5, 3, 5));  // 2 high
+  scene::Light l;
+  l.direction = glm::normalize(glm::vec3(std::sqrt(3.0f), -1.0f, 0.0f));  // 30 degrees above the horizon
+  EXPECT_NEAR(scene::blocker_height_scale(l, b), 4.0f, 1e-5f) << "2 / sin 30";
+  l.direction = {0.0f, -1.0f, 0.0f};
+  EXPECT_NEAR(scene::blocker_height_scale(l, b), 2.0f, 1e-5f) << "from straight above: the height";
+  l.direction = glm::normalize(glm::vec3(1.0f, -0.01f, 0.0f));
+  EXPECT_NEAR(scene::blocker_height_scale(l, b), 2.0f / scene::kGrazingRaySine, 1e-3f) << "grazing: bounded";
+  l.type = scene::LightType::point;  // the ray to the centre (0, 2, 0) decides, not `direction`
+  l.position = {0.0f, 6.0f, 4.0f};   // 45 degrees above it
+  EXPECT_NEAR(scene::blocker_height_scale(l, b), 2.0f * std::sqrt(2.0f), 1e-4f);
+  EXPECT_EQ(scene::blocker_height_scale(l, scene::Bounds{}), 1.0f) << "no bounds";
 }

@@ -16,7 +16,8 @@ uniform sampler2D u_depth;       // gbuffer_depth: linear view depth, 0 = backgr
 uniform sampler2D u_normal;      // gbuffer_normal
 uniform sampler2D u_moments;     // optimised moments (msm_moments.frag.glsl), filtered narrow
 uniform sampler2D u_moments_wide;  // the same, filtered wide (CONTACT_HARDENING only)
-uniform float u_narrow_height;   // world units: the penumbra heights the two filters match
+uniform float u_narrow_height;   // the penumbra heights the two filters match, fractions of the
+                                 // scene's height along the light (u_blocker_height_scale)
 uniform float u_wide_height;
 uniform mat4 u_to_canonical;     // the inverse of msm_moments' transform
 uniform vec4 u_optimised_offset;
@@ -70,7 +71,7 @@ void main() {
     // The wide map finds the blockers; their height above the receiver picks the filter width
     // between the two maps' (linear in height, like a penumbra's width).
     float wide = shadow_intensity(textureLod(u_moments_wide, r.coord.xy, 0.0), z0, blocker);
-    float height = light_distance(z0) - light_distance(blocker);
+    float height = (light_distance(z0) - light_distance(blocker)) / u_blocker_height_scale;
     shadow = mix(shadow, wide, clamp((height - u_narrow_height) / max(u_wide_height - u_narrow_height, 1e-4), 0.0, 1.0));
 #endif
     lit = 1.0 - shadow;
