@@ -11,6 +11,7 @@
 #include "gl/shader_preprocessor.h"
 #include "gl/texture.h"
 #include "test_support/gl_context.h"
+#include "test_support/temp_dir.h"
 
 using namespace penumbra;
 namespace fs = std::filesystem;
@@ -19,8 +20,8 @@ class Shaders : public ::testing::Test {
  protected:
   void SetUp() override {
     test::gl_context();
-    root_ = fs::temp_directory_path() / ("penumbra_shader_test_" + std::to_string(::getpid()) + "_" +
-                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    root_ = test::fresh_temp_dir(std::string("shader_test_") +
+                                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(root_ / "lib");
     fs::create_directories(root_ / "pass");
     files_ = gl::ShaderFileSystem({root_}, false);

@@ -16,6 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_support/temp_dir.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -26,8 +28,7 @@ struct EvalRun {
 };
 
 EvalRun run_eval(const std::string& args, const std::string& env = "") {
-  const fs::path dir = fs::temp_directory_path() / ("penumbra_eval_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = penumbra::test::temp_dir("eval_test");
   const fs::path err = dir / "stderr.txt";
   const std::string cmd = env + std::string(PENUMBRA_CLI) + " eval --context osmesa " + args + " >/dev/null 2>" + err.string();
   const int status = std::system(cmd.c_str());
@@ -41,10 +42,7 @@ EvalRun run_eval(const std::string& args, const std::string& env = "") {
 }
 
 fs::path out_dir() {
-  fs::path d = fs::temp_directory_path() / ("penumbra_eval_out_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
+  return penumbra::test::fresh_temp_dir("eval_out");
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ struct Fixture : ::testing::Test {
     return controller->session().executor().resource("shadow_mask")->read();
   }
   std::filesystem::path temp(const std::string& name) {
-    return std::filesystem::temp_directory_path() / ("penumbra_sandbox_" + name);
+    return test::temp_dir("sandbox") / name;
   }
   technique::TechniqueRegistry registry;
   exec::PassLibrary library;

@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "scene/gltf_loader.h"
+#include "test_support/temp_dir.h"
 
 using namespace penumbra;
 namespace fs = std::filesystem;
@@ -31,8 +32,7 @@ std::string write_gltf(const std::string& name, const std::string& nodes, const 
   "scenes": [{"nodes": [0)" + (roots.empty() ? "" : ", " + roots) + R"(]}],
   "scene": 0
 })";
-  const fs::path dir = fs::temp_directory_path() / "penumbra_gltf_lights_test";
-  fs::create_directories(dir);
+  const fs::path dir = test::temp_dir("gltf_lights_test");
   const std::string path = (dir / name).string();
   std::ofstream(path) << json;
   return path;

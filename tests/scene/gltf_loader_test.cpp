@@ -10,6 +10,7 @@
 #include <tiny_gltf.h>
 
 #include "scene/gltf_loader.h"
+#include "test_support/temp_dir.h"
 
 using namespace penumbra;
 namespace fs = std::filesystem;
@@ -81,8 +82,7 @@ struct ModelBuilder {
     model.defaultScene = 0;
   }
   std::string write(const std::string& name, bool binary = false) {
-    const fs::path dir = fs::temp_directory_path() / "penumbra_gltf_test";
-    fs::create_directories(dir);
+    const fs::path dir = test::temp_dir("gltf_test");
     model.buffers[0].uri = fs::path(name).stem().string() + ".bin";
     const std::string path = (dir / name).string();
     tinygltf::TinyGLTF io;

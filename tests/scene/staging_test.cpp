@@ -14,6 +14,7 @@
 #include "scene/ground_plane.h"
 #include "scene/mesh_builder.h"
 #include "scene/staging.h"
+#include "test_support/temp_dir.h"
 
 using namespace penumbra;
 namespace fs = std::filesystem;
@@ -60,8 +61,7 @@ std::string write_gltf(const std::string& name, const std::string& extra_nodes, 
   if (!cameras.empty()) json += R"("cameras": [)" + cameras + "],";
   json += R"("nodes": [{"mesh": 0})" + (extra_nodes.empty() ? "" : ", " + extra_nodes) + R"(],
   "scenes": [{"nodes": [0, 1, 2, 3]}], "scene": 0})";
-  const fs::path dir = fs::temp_directory_path() / "penumbra_staging_test";
-  fs::create_directories(dir);
+  const fs::path dir = test::temp_dir("staging_test");
   const std::string path = (dir / name).string();
   std::ofstream(path) << json;
   return path;
