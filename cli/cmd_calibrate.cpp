@@ -115,18 +115,27 @@ struct SceneRig {
   bool validation = false;
   std::unique_ptr<technique::TechniqueSession> session;
   ReferenceFrame reference;
+  metrics::PixelClasses classes;  // of the first frame rendered (the same G-buffer every frame)
   double start = 0.0, fitted = 0.0, baseline = -1.0;  // penumbra RMSE
 };
 
+// Over the soft penumbra, as `penumbra eval` reports it.
 Result<double> penumbra_rmse(SceneRig& rig) {
+  if (Status s = keep_alive(*rig.session, {"gbuffer_depth", "gbuffer_normal"}); !s) return s.error();
   for (int f = 0; f < kFramesPerEvaluation; ++f)
     if (Status s = rig.session->render(); !s) return s.error();
   gl::Texture* mask = rig.session->executor().resource(technique::kShadowMask);
   if (!mask) return make_error("the technique wrote no shadow_mask", ErrorKind::internal);
-  auto errors = metrics::compare_masks(read_mask_image(*mask), rig.reference.mask, rig.reference.coverage);
+  if (rig.classes.classes.empty()) {
+    Result<metrics::PixelClasses> c = frame_classes(*rig.session, rig.reference.mask, rig.reference.coverage);
+    if (!c) return c.error();
+    rig.classes = std::move(*c);
+  }
+  auto errors = metrics::compare_masks(read_mask_image(*mask), rig.reference.mask, rig.reference.coverage, rig.classes);
   if (!errors) return errors.error();
   if (errors->penumbra_pixels == 0)
-    return make_error("scene '" + rig.name + "' has no penumbra pixels in its reference: nothing to fit");
+    return make_error("scene '" + rig.name + "' has no soft penumbra in its reference (docs/evaluation.md, \"Pixel "
+                      "classes\"): nothing to fit");
   return errors->rmse_penumbra;
 }
 

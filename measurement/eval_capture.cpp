@@ -59,6 +59,13 @@ Result<metrics::ReceiverGeometry> read_receiver_geometry(technique::TechniqueSes
   return metrics::receiver_geometry(depth->width(), depth->height(), positions, normals, session.light());
 }
 
+Result<metrics::PixelClasses> frame_classes(technique::TechniqueSession& session, const metrics::MaskImage& reference,
+                                            const metrics::CoverageMask& coverage) {
+  Result<metrics::ReceiverGeometry> geometry = read_receiver_geometry(session);
+  if (!geometry) return geometry.error();
+  return metrics::classify_pixels(reference, coverage, &*geometry);
+}
+
 Status render_timed_frames(technique::TechniqueSession& session, int warmup, int frames) {
   for (int i = 0; i < warmup + frames; ++i)
     if (Status s = session.render(); !s) return s;

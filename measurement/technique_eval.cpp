@@ -32,9 +32,9 @@ Result<TechniqueEvaluation> evaluate_technique(technique::TechniqueSession& sess
   TechniqueEvaluation out;
   out.mask = read_mask_image(*mask);
   if (classes.classes.empty()) {
-    Result<metrics::ReceiverGeometry> geometry = read_receiver_geometry(session);
-    if (!geometry) return geometry.error();
-    classes = metrics::classify_pixels(reference.mask, reference.coverage, &*geometry);
+    Result<metrics::PixelClasses> c = frame_classes(session, reference.mask, reference.coverage);
+    if (!c) return c.error();
+    classes = std::move(*c);
   }
   auto errors = metrics::compare_masks(out.mask, reference.mask, reference.coverage, classes);
   if (!errors) return errors.error();
