@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include "metrics/mask_metrics.h"
 #include "raytraced_reference.h"
 
 namespace penumbra::test {
@@ -15,19 +14,25 @@ metrics::MaskImage traced_reference(const scene::Scene& scene, const RenderedFra
                                      frame.mask.height, {.samples = samples}, frame.coverage);
 }
 
-double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference, const RenderedFrame& frame) {
+metrics::MaskErrors frame_errors(const metrics::MaskImage& mask, const metrics::MaskImage& reference,
+                                 const RenderedFrame& frame) {
   const metrics::PixelClasses classes = metrics::classify_pixels(reference, frame.coverage, &frame.geometry);
   if (classes.classes.empty()) {
     ADD_FAILURE() << "the reference and the frame's coverage or geometry differ in size";
-    return 1.0;
-  }
-  if (classes.count(metrics::PixelClass::soft_penumbra) == 0) {
-    ADD_FAILURE() << "the frame has no soft penumbra to judge";
-    return 1.0;
+    return {};
   }
   Result<metrics::MaskErrors> e = metrics::compare_masks(mask, reference, frame.coverage, classes);
   EXPECT_TRUE(e) << (e ? "" : e.error().to_string());
-  return e ? e->rmse_penumbra : 1.0;
+  return e ? *e : metrics::MaskErrors{};
+}
+
+double penumbra_rmse(const metrics::MaskImage& mask, const metrics::MaskImage& reference, const RenderedFrame& frame) {
+  const metrics::MaskErrors e = frame_errors(mask, reference, frame);
+  if (e.penumbra_pixels == 0) {
+    ADD_FAILURE() << "the frame has no soft penumbra to judge";
+    return 1.0;
+  }
+  return e.rmse_penumbra;
 }
 
 }  // namespace penumbra::test

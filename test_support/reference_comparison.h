@@ -11,6 +11,7 @@
 //   metrics::MaskImage truth = traced_reference(s, mine);
 //   EXPECT_LT(penumbra_rmse(mine.mask, truth, mine), penumbra_rmse(pcf.mask, truth, mine));
 #include "metrics/mask_image.h"
+#include "metrics/mask_metrics.h"
 #include "scene/scene.h"
 #include "test_support/technique_rig.h"
 
@@ -19,6 +20,12 @@ namespace penumbra::test {
 // Exact area-light visibility of the scene's light (`samples` stratified light points) at the
 // frame's receivers; 1 off them. Rows top to bottom, like the frame's mask.
 metrics::MaskImage traced_reference(const scene::Scene& scene, const RenderedFrame& frame, int samples = 256);
+
+// Every error of `mask` against `reference` (metrics::compare_masks) over the pixel classes of
+// `frame`, the frame both masks are of, so rmse_penumbra is `penumbra eval`'s. Fails the test and
+// returns zeros on error or when the frame's geometry and the reference differ in size.
+metrics::MaskErrors frame_errors(const metrics::MaskImage& mask, const metrics::MaskImage& reference,
+                                 const RenderedFrame& frame);
 
 // Penumbra RMSE of `mask` against `reference` over the soft penumbra (metrics/pixel_classes.h:
 // the reference strictly between lit and umbra, away from the geometric edges of `frame`, the
