@@ -1,10 +1,19 @@
 #include "exec/gpu_scene.h"
 
+#include <atomic>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 namespace penumbra::exec {
 
-GpuScene::GpuScene(const scene::Scene& scene) : scene_(scene) {
+namespace {
+std::uint64_t next_serial() {
+  static std::atomic<std::uint64_t> next{1};
+  return next++;
+}
+}  // namespace
+
+GpuScene::GpuScene(const scene::Scene& scene) : serial_(next_serial()), scene_(scene) {
   std::vector<scene::Vertex> vertices;
   std::vector<uint32_t> indices;
   for (const scene::Mesh& m : scene_.meshes) {

@@ -8,6 +8,7 @@
 //   uniform vec4 u_base_color; uniform int u_has_texture; uniform sampler2D u_base_texture;
 //   uniform float u_alpha_cutoff;   // < 0: opaque, no alpha test
 // (any of them may be left out; unused uniforms are skipped).
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,10 @@ class GpuScene {
   // textures. With alpha_test=false, masked materials draw as opaque (u_alpha_cutoff = -1).
   void draw(const gl::Program& program, GLuint texture_unit = 0, bool alpha_test = true) const;
   size_t triangle_count() const { return scene_.triangle_count(); }
+  // Different for every GpuScene the process makes, never reused (an address is, by the next
+  // scene allocated there): what a cache of something built from the scene is keyed by. A
+  // GpuScene does not change after construction, so equal serials mean equal scenes.
+  std::uint64_t serial() const { return serial_; }
 
  private:
   struct MeshRange {
@@ -34,6 +39,7 @@ class GpuScene {
     GLsizei index_count;
     size_t first_index;
   };
+  std::uint64_t serial_;
   scene::Scene scene_;  // kept for the CPU reference, metrics and bounds
   gl::Buffer vertices_, indices_;
   gl::GlHandle<gl::delete_vertex_array> vao_;

@@ -22,12 +22,10 @@ using graph::int_param;
 using graph::Format;
 
 // One Embree scene per GpuScene, shared by every pass instance (a recompile or a switch of
-// method must not rebuild the BVH). Keyed like the reset rule: pointer + triangles + bounds.
+// method must not rebuild the BVH). Keyed like the reset rule: by the scene's serial.
 struct RaySceneCache {
   std::mutex mutex;
-  const void* scene = nullptr;
-  std::size_t triangles = 0;
-  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};
+  std::uint64_t scene = 0;  // GpuScene::serial() of the scene it was built from
   std::optional<RayScene> ray_scene;
 };
 
@@ -39,18 +37,13 @@ RaySceneCache& ray_scene_cache() {
 Result<const RayScene*> ray_scene_for(const exec::GpuScene& gpu) {
   RaySceneCache& c = ray_scene_cache();
   std::lock_guard<std::mutex> lock(c.mutex);
-  const scene::Scene& s = gpu.cpu();
-  if (!c.ray_scene || c.scene != &gpu || c.triangles != gpu.triangle_count() || c.bounds_min != s.bounds.min ||
-      c.bounds_max != s.bounds.max) {
+  if (!c.ray_scene || c.scene != gpu.serial()) {
     const auto t0 = std::chrono::steady_clock::now();
-    Result<RayScene> built = RayScene::build(s);
+    Result<RayScene> built = RayScene::build(gpu.cpu());
     if (!built) return built.error();
     c.ray_scene.emplace(std::move(*built));
-    c.scene = &gpu;
-    c.triangles = gpu.triangle_count();
-    c.bounds_min = s.bounds.min;
-    c.bounds_max = s.bounds.max;
-    spdlog::info("reference: Embree scene of {} triangles built in {:.0f} ms", c.triangles,
+    c.scene = gpu.serial();
+    spdlog::info("reference: Embree scene of {} triangles built in {:.0f} ms", gpu.triangle_count(),
                  std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   return &*c.ray_scene;

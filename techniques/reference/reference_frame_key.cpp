@@ -6,12 +6,7 @@ namespace penumbra::reference {
 
 ReferenceFrameKey make_frame_key(const exec::FrameInputs& frame, std::vector<double> settings) {
   ReferenceFrameKey k;
-  k.scene = frame.scene;
-  if (frame.scene) {
-    k.triangles = frame.scene->triangle_count();
-    k.bounds_min = frame.scene->cpu().bounds.min;
-    k.bounds_max = frame.scene->cpu().bounds.max;
-  }
+  k.scene = frame.scene ? frame.scene->serial() : 0;
   const scene::Camera& c = frame.camera;
   k.camera_position = c.position;
   k.camera_yaw = c.yaw;

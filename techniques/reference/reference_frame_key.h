@@ -6,6 +6,7 @@
 //   ReferenceFrameKey key = make_frame_key(ctx.frame(), {samples, map_size, seed});
 //   if (key != last_key_) { reset(); last_key_ = key; }
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -15,11 +16,9 @@
 namespace penumbra::reference {
 
 struct ReferenceFrameKey {
-  // The GpuScene pointer alone could be reused by a new scene allocated at the same address, so
-  // the triangle count and bounds go with it (a scene parameter such as ball_height moves them).
-  const void* scene = nullptr;
-  std::size_t triangles = 0;
-  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};
+  // GpuScene::serial(), not its address: a new scene allocated where the last one was, with the
+  // same triangles and bounds and another texture, is another scene. 0: none.
+  std::uint64_t scene = 0;
   glm::vec3 camera_position{0.0f};
   float camera_yaw = 0, camera_pitch = 0, camera_fov_y = 0, camera_near = 0, camera_far = 0;
   int light_type = 0;

@@ -2,8 +2,14 @@
 // come in, and the reset rule restarts it when the light moves.
 #include <gtest/gtest.h>
 
+#include <optional>
+
+#include "exec/gpu_scene.h"
 #include "metrics/mask_metrics.h"
 #include "reference_session.h"
+#include "techniques/reference/reference_frame_key.h"
+#include "test_support/gl_context.h"
+#include "test_support/technique_rig.h"
 
 using namespace penumbra;
 
@@ -98,4 +104,25 @@ TEST(ReferenceProgressive, ProgressBelongsToTheSessionsPlan) {
   ASSERT_TRUE(r.session().set_technique("hard"));
   r.render();
   EXPECT_FALSE(r.session().progress().has_value()) << "a technique without a progressive pass reports none";
+}
+
+// The reset rule names a scene by its serial: a scene made where the last one was, with the same
+// triangles and bounds but another material, is another scene (keyed by address, triangle count
+// and bounds, both references and the shared Embree scene took it for the old one).
+TEST(ReferenceResetRule, ASceneMadeWhereTheLastOneWasIsAnotherScene) {
+  test::gl_context();
+  scene::Scene a = test::builtin_scene("ball");
+  scene::Scene b = a;
+  b.materials.front().alpha_mode = scene::AlphaMode::mask;  // the ground: same geometry, other casting
+  std::optional<exec::GpuScene> gpu;
+  exec::FrameInputs frame;
+  gpu.emplace(a);
+  frame.scene = &*gpu;
+  const reference::ReferenceFrameKey key_a = reference::make_frame_key(frame, {});
+  gpu.reset();
+  gpu.emplace(b);
+  ASSERT_EQ(frame.scene, &*gpu) << "the new scene sits where the old one did";
+  const reference::ReferenceFrameKey key_b = reference::make_frame_key(frame, {});
+  EXPECT_NE(key_a, key_b);
+  EXPECT_EQ(key_b, reference::make_frame_key(frame, {})) << "the same scene keeps its key";
 }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <mutex>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -10,13 +11,11 @@
 namespace penumbra::esm {
 namespace {
 
-// One remembered scene: the GpuScene pointer could be reused by a new scene at the same
-// address, so its triangle count, mesh count and bounds go with it (like the Embree cache).
+// One remembered scene, by GpuScene::serial() (an address is reused by the next scene made
+// there), like the Embree cache.
 struct Cache {
   std::mutex mutex;
-  const void* scene = nullptr;
-  size_t triangles = 0, meshes = 0;
-  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};
+  std::uint64_t scene = 0;
   std::weak_ptr<SilhouetteBuffers> buffers;
 };
 
@@ -46,10 +45,7 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
   Cache& c = cache();
   std::lock_guard<std::mutex> lock(c.mutex);
   const scene::Scene& s = gpu.cpu();
-  if (auto alive = c.buffers.lock(); alive && c.scene == &gpu && c.triangles == gpu.triangle_count() &&
-                                     c.meshes == s.meshes.size() && c.bounds_min == s.bounds.min &&
-                                     c.bounds_max == s.bounds.max)
-    return alive;
+  if (auto alive = c.buffers.lock(); alive && c.scene == gpu.serial()) return alive;
   const auto t0 = std::chrono::steady_clock::now();
   Result<std::vector<SilhouetteGeometry>> geometry = build_scene_silhouettes(s);
   if (!geometry) return geometry.error();
@@ -83,11 +79,7 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
                "{} degenerate triangles skipped) built in {:.0f} ms",
                t.quads, t.edges, t.facets, t.open, t.non_manifold, t.beveled, t.degenerate_triangles,
                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-  c.scene = &gpu;
-  c.triangles = gpu.triangle_count();
-  c.meshes = s.meshes.size();
-  c.bounds_min = s.bounds.min;
-  c.bounds_max = s.bounds.max;
+  c.scene = gpu.serial();
   c.buffers = out;
   return out;
 }
