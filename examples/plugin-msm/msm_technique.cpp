@@ -67,9 +67,10 @@ penumbra::exec::PassType mask_pass_type() {
       .real("moment_bias", 6e-5, 0.0, 0.01, "", "alpha: moments pulled towards (0.5, ...) against rounding (paper, 16-bit)")
       .real("depth_bias", 0.0, 0.0, 0.05, "window depth", "subtracted from the receiver's light depth (acne)")
       .real("narrow_height", 0.4, 0.0, 2.0, "of the scene's height along the light",
-            "moments_wide bound: the edge height `moments` is filtered for")
+            "The moments' Gaussian is the light's penumbra of an edge this high above its receiver "
+            "(separable_filter's penumbra_height)")
       .real("wide_height", 1.0, 0.0, 2.0, "of the scene's height along the light",
-            "moments_wide bound: the edge height it is filtered for")
+            "The same for moments_wide (contact hardening)")
       .build<MaskPass>();
 }
 
