@@ -126,11 +126,8 @@ Result<double> penumbra_rmse(SceneRig& rig) {
     if (Status s = rig.session->render(); !s) return s.error();
   gl::Texture* mask = rig.session->executor().resource(technique::kShadowMask);
   if (!mask) return make_error("the technique wrote no shadow_mask", ErrorKind::internal);
-  if (rig.classes.classes.empty()) {
-    Result<metrics::PixelClasses> c = frame_classes(*rig.session, rig.reference.mask, rig.reference.coverage);
-    if (!c) return c.error();
-    rig.classes = std::move(*c);
-  }
+  if (Status s = frame_classes(*rig.session, rig.reference.mask, rig.reference.coverage, rig.classes); !s)
+    return s.error();
   auto errors = metrics::compare_masks(read_mask_image(*mask), rig.reference.mask, rig.reference.coverage, rig.classes);
   if (!errors) return errors.error();
   if (errors->penumbra_pixels == 0)

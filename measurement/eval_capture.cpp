@@ -59,11 +59,13 @@ Result<metrics::ReceiverGeometry> read_receiver_geometry(technique::TechniqueSes
   return metrics::receiver_geometry(depth->width(), depth->height(), positions, normals, session.light());
 }
 
-Result<metrics::PixelClasses> frame_classes(technique::TechniqueSession& session, const metrics::MaskImage& reference,
-                                            const metrics::CoverageMask& coverage) {
+Status frame_classes(technique::TechniqueSession& session, const metrics::MaskImage& reference,
+                     const metrics::CoverageMask& coverage, metrics::PixelClasses& classes) {
+  if (!classes.classes.empty()) return {};
   Result<metrics::ReceiverGeometry> geometry = read_receiver_geometry(session);
   if (!geometry) return geometry.error();
-  return metrics::classify_pixels(reference, coverage, &*geometry);
+  classes = metrics::classify_pixels(reference, coverage, &*geometry);
+  return {};
 }
 
 Status render_timed_frames(technique::TechniqueSession& session, int warmup, int frames) {

@@ -25,10 +25,12 @@ Status keep_alive(technique::TechniqueSession& session, const std::vector<std::s
 // normal and N · (direction to the session's light), rows top to bottom. Needs gbuffer_depth and
 // gbuffer_normal kept alive (keep_alive above).
 Result<metrics::ReceiverGeometry> read_receiver_geometry(technique::TechniqueSession& session);
-// The pixel classes of the last frame against its reference (classify_pixels with the frame's
-// receiver geometry): what every penumbra RMSE of the measurements is taken over.
-Result<metrics::PixelClasses> frame_classes(technique::TechniqueSession& session, const metrics::MaskImage& reference,
-                                            const metrics::CoverageMask& coverage);
+// Fills `classes`, when empty, with the pixel classes of the last frame against its reference
+// (classify_pixels with the frame's receiver geometry): what every penumbra RMSE of the
+// measurements is taken over. The G-buffer is the same for every technique of a frame, so callers
+// keep `classes` and this classifies once.
+Status frame_classes(technique::TechniqueSession& session, const metrics::MaskImage& reference,
+                     const metrics::CoverageMask& coverage, metrics::PixelClasses& classes);
 // Renders `warmup` frames, then `frames` measured frames (plus the timer's read-back latency
 // when timings come from GPU timestamp queries, so the measured frames are the last ones read).
 Status render_timed_frames(technique::TechniqueSession& session, int warmup, int frames);

@@ -31,11 +31,7 @@ Result<TechniqueEvaluation> evaluate_technique(technique::TechniqueSession& sess
   if (!mask) return make_error("technique '" + spec.label + "' wrote no shadow_mask", ErrorKind::internal);
   TechniqueEvaluation out;
   out.mask = read_mask_image(*mask);
-  if (classes.classes.empty()) {
-    Result<metrics::PixelClasses> c = frame_classes(session, reference.mask, reference.coverage);
-    if (!c) return c.error();
-    classes = std::move(*c);
-  }
+  if (Status s = frame_classes(session, reference.mask, reference.coverage, classes); !s) return s.error();
   auto errors = metrics::compare_masks(out.mask, reference.mask, reference.coverage, classes);
   if (!errors) return errors.error();
   out.row = {spec.label, *errors, 0.0};
