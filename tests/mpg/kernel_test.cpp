@@ -74,3 +74,21 @@ TEST(MpgKernel, CumulativeVarianceIncreasesPassByPass) {
   std::vector<float> f = cumulative_pass_variance(KernelSampling::poisson, 20, false, 19, 4);
   EXPECT_NEAR(f[4], 4.0f * f[1], 1e-3f * f[4]);
 }
+
+// Pass i's Poisson set is pass 0's turned by i golden angles: the same radii and weights (so the
+// same spread), other directions, so ten passes do not repeat one set's gaps.
+TEST(MpgKernel, EachPassTurnsThePoissonSetByTheGoldenAngle) {
+  const std::vector<Tap> first = kernel_taps(KernelSampling::poisson, 20, 19, 0);
+  const std::vector<Tap> second = kernel_taps(KernelSampling::poisson, 20, 19, 1);
+  ASSERT_EQ(first.size(), second.size());
+  const float golden = 2.39996323f;
+  for (size_t i = 0; i < first.size(); ++i) {
+    EXPECT_NEAR(glm::length(first[i].offset), glm::length(second[i].offset), 1e-4f) << i;
+    EXPECT_NEAR(first[i].weight, second[i].weight, 1e-6f) << i;
+    if (glm::length(first[i].offset) < 1e-3f) continue;  // the origin
+    const float turned = std::atan2(second[i].offset.y, second[i].offset.x) - std::atan2(first[i].offset.y, first[i].offset.x);
+    EXPECT_NEAR(std::remainder(turned - golden, 2.0f * 3.14159265f), 0.0f, 1e-4f) << i;
+  }
+  // Turning changes only the bilinear term of the spread: passes of one size add nearly one variance.
+  EXPECT_NEAR(kernel_variance(second), kernel_variance(first), 0.02 * kernel_variance(first));
+}

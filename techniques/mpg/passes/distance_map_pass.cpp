@@ -22,6 +22,12 @@ const char* alteration_define(const std::string& alteration) {
   return "2";  // multipass
 }
 
+const char* shadow_test_define(const std::string& test) {
+  if (test == "nearest") return "0";
+  if (test == "bilinear") return "1";
+  return "2";  // footprint
+}
+
 class DistanceMapPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
@@ -30,7 +36,7 @@ class DistanceMapPass final : public exec::PassImpl {
         {.compute = std::string(kShaderDir) + "distance_map.comp.glsl",
          .defines = {{"MAPPING", ctx.enumeration("mapping") == "physical" ? "1" : "0"},
                      {"ALTERATION", alteration_define(alteration)},
-                     {"SHADOW_TEST", ctx.enumeration("shadow_test") == "nearest" ? "0" : "1"},
+                     {"SHADOW_TEST", shadow_test_define(ctx.enumeration("shadow_test"))},
                      {"D_TILES", ctx.bound("d_tiles") ? "1" : "0"}}});
     if (!p.valid()) return *p.last_error();
     if (ctx.bound("d_tiles")) {
@@ -50,6 +56,7 @@ class DistanceMapPass final : public exec::PassImpl {
     prog.set("u_distance_power", ctx.real("distance_power"));
     prog.set("u_distance_multiplier", ctx.real("distance_multiplier"));
     prog.set("u_light_size_scale", ctx.real("light_size_scale"));
+    prog.set("u_footprint_spread", ctx.real("footprint_spread"));
     // Pixels per world unit at view depth 1 (the receiver's depth divides it in the shader).
     prog.set("u_focal_px", static_cast<float>(frame.screen_h) / (2.0f * std::tan(0.5f * frame.camera.fov_y)));
     prog.set("u_view_proj", frame.projection() * frame.view());
@@ -83,9 +90,14 @@ exec::PassType distance_map_pass_type() {
       .image_out("kernel_shape", {Format::RGBA16F})
       .image_out("d_tiles", {Format::R8}, false)
       .same_size({"depth", "normal", "distance_map", "kernel_shape"})
-      .enumeration("shadow_test", "bilinear", {"bilinear", "nearest"},
-                   "Pass 2's hard shadow S: bilinear = the 2x2 nearest texels compared and weighted bilinearly (keeps "
-                   "the edge's position inside a texel); nearest = the paper's bit from one texel")
+      .enumeration("shadow_test", "footprint", {"footprint", "bilinear", "nearest"},
+                   "Pass 2's S: footprint = the shadow map prefiltered in light space by a Gaussian of the penumbra's "
+                   "spread, at most footprint_spread pixels, the screen passes adding the rest (physical mapping; "
+                   "bilinear with the paper's); bilinear = the 2x2 nearest texels compared and weighted bilinearly; "
+                   "nearest = the paper's bit from one texel")
+      .real("footprint_spread", 0.5, 0.1, 4.0, "pixels",
+            "Footprint S: the widest light-space prefilter, as a spread (standard deviation) on screen; narrower "
+            "penumbrae are made by it alone (0.5: the most that 25 taps sample without visible steps)")
       .enumeration("mapping", "physical", {"physical", "paper"},
                    "Occluder distance to D: physical = PCSS penumbra width from the scene light's size, in pixels "
                    "(section 6); paper = (distance / light depth range)^Dp * Dm (section 3.2)")

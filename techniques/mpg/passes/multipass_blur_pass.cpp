@@ -65,7 +65,7 @@ class MultipassBlurPass final : public exec::PassImpl {
     prog.set("u_kernel_size", size);
     if (!dense) {
       std::vector<glm::vec4> packed;
-      for (const Tap& t : kernel_taps(KernelSampling::poisson, ctx.integer("poisson_taps"), size))
+      for (const Tap& t : kernel_taps(KernelSampling::poisson, ctx.integer("poisson_taps"), size, iteration))
         packed.emplace_back(t.offset, t.weight, 0.0f);
       glProgramUniform4fv(prog.id(), prog.uniform_location("u_taps"), static_cast<GLsizei>(packed.size()),
                           &packed[0].x);

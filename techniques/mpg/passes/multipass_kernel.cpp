@@ -24,7 +24,7 @@ float gaussian_weight(glm::vec2 offset_px, int size) {
   return std::exp(-glm::dot(offset_px, offset_px) / (2.0f * sigma * sigma));
 }
 
-std::vector<Tap> kernel_taps(KernelSampling sampling, int count, int size) {
+std::vector<Tap> kernel_taps(KernelSampling sampling, int count, int size, int iteration) {
   std::vector<Tap> taps;
   const float half = 0.5f * static_cast<float>(size - 1);  // pixels from the centre to the edge texel
   if (sampling == KernelSampling::dense) {
@@ -33,7 +33,9 @@ std::vector<Tap> kernel_taps(KernelSampling sampling, int count, int size) {
       for (int x = -r; x <= r; ++x) taps.push_back({glm::vec2(x, y), 0.0f});
   } else {
     const int n = std::clamp(count, 1, kMaxPoissonPoints);
-    for (int i = 0; i < n; ++i) taps.push_back({poisson_points()[static_cast<size_t>(i)] * half, 0.0f});
+    const float a = 2.39996323f * static_cast<float>(iteration);
+    const glm::mat2 rot(std::cos(a), std::sin(a), -std::sin(a), std::cos(a));
+    for (int i = 0; i < n; ++i) taps.push_back({rot * poisson_points()[static_cast<size_t>(i)] * half, 0.0f});
   }
   double sum = 0.0;
   for (Tap& t : taps) sum += t.weight = gaussian_weight(t.offset, size);
@@ -58,7 +60,7 @@ std::vector<float> cumulative_pass_variance(KernelSampling sampling, int count, 
   std::vector<float> cumulative(static_cast<size_t>(max_passes) + 1, 0.0f);
   double total = 0.0;
   for (int i = 0; i < max_passes; ++i) {
-    total += kernel_variance(kernel_taps(sampling, count, pass_kernel_size(progressive, i, max_kernel)));
+    total += kernel_variance(kernel_taps(sampling, count, pass_kernel_size(progressive, i, max_kernel), i));
     cumulative[static_cast<size_t>(i) + 1] = static_cast<float>(total);
   }
   return cumulative;

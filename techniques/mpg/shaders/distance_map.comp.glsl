@@ -32,6 +32,9 @@
 // (identity when `anisotropic` is off) and the receiver plane's view-depth gradient per pixel,
 // written as (A11, A12, dz/dx, dz/dy); background (1, 0, 0, 0).
 //
+// SHADOW_TEST 2 (footprint, physical mapping) prefilters S in light space up to a pixel's
+// footprint; the screen-space passes then add only the variance S does not yet carry.
+//
 // Written per pixel (layout in mpg_common.glsl): background (0, 0, 0, 0); lit or outside the
 // shadow map (0, 0, z, 0); receiver facing away from the light (1, 0, z, 0): its own umbra,
 // never filtered (the reference counts such receivers as fully shadowed); shadowed (S, D, z, 0).
@@ -39,6 +42,7 @@
 #include "common/shadow_common.glsl"
 #include "mpg_common.glsl"
 #include "kernel_shape.glsl"
+#include "common/receiver_plane.glsl"
 
 layout(rgba16f, binding = 0) uniform writeonly image2D u_distance_map;
 layout(rgba16f, binding = 1) uniform writeonly image2D u_kernel_shape;
@@ -55,16 +59,19 @@ uniform int u_anisotropic;         // 1: shaped kernels (kernel_shape.glsl), 0: 
 uniform float u_max_kernel;        // pixels
 uniform int u_max_passes;
 uniform float u_pass_variance[65]; // [n]: per-axis variance (pixels^2) after n full blur passes
+uniform float u_footprint_spread;  // SHADOW_TEST 2: largest spread of the light-space prefilter, pixels
 #if D_TILES
 layout(r8, binding = 2) uniform writeonly image2D u_d_tiles;  // 1 where the 16 x 16 tile has D > 0
 #include "tile_marks.glsl"
 #endif
 
-// World-unit penumbra width across the light direction (Fernando 2005, eq. 1, scene/light.h).
-float penumbra_width_world(float d_r, float d_b) {
-  float per_uv = u_light_ortho == 1 ? u_light_frustum_width : max(d_r, 1e-4) * u_light_frustum_width;
-  return penumbra_width_uv(d_r, d_b) * per_uv;
+// World units across the light per shadow-map UV unit, at a receiver d_r from the light.
+float world_per_uv(float d_r) {
+  return u_light_ortho == 1 ? u_light_frustum_width : max(d_r, 1e-4) * u_light_frustum_width;
 }
+
+// World-unit penumbra width across the light direction (Fernando 2005, eq. 1, scene/light.h).
+float penumbra_width_world(float d_r, float d_b) { return penumbra_width_uv(d_r, d_b) * world_per_uv(d_r); }
 
 // Fractional number of multi-pass blurs whose summed variance is `variance` (pixels^2); a
 // fraction f of a pass blends the pass's result by f (multipass_blur.comp.glsl), adding f times
@@ -102,7 +109,37 @@ float hard_shadow(vec3 c, out float blocker) {
 #endif
 }
 
-float filter_control(float d_r, float d_b, float pixels_per_world) {
+// SHADOW_TEST 2: S prefiltered in the shadow map by a Gaussian of spread sigma_uv: 5 x 5 bilinear
+// comparisons h sigma apart with weights exp(-k^2 / 2), k = -2..2, whose per-axis variance is
+// 0.9235 h^2 sigma^2, so h = 1.0406; each compared against the receiver plane (Isidoro 2006,
+// receiver_plane.glsl). `blockers` counts the taps that found a blocker, `blocker` is their mean
+// window depth.
+float prefiltered_shadow(Receiver r, float sigma_uv, out float blocker, out float blockers) {
+  const float weight[5] = float[](0.1353, 0.6065, 1.0, 0.6065, 0.1353);
+  const float h = 1.0406;
+  float s = 0.0, sum = 0.0;
+  blocker = 0.0;
+  blockers = 0.0;
+  bool all_shadowed = true;
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) {
+      float b;
+      vec2 o = h * sigma_uv * vec2(i - 2, j - 2);
+      float t = hard_shadow(vec3(r.coord.xy + o, receiver_depth_at(r, o, 0.0)), b);
+      float w = weight[i] * weight[j];
+      s += w * t;
+      sum += w;
+      all_shadowed = all_shadowed && t >= 1.0;
+      if (t > 0.0) { blocker += b; blockers += 1.0; }
+    }
+  blocker /= max(blockers, 1.0);
+  return all_shadowed ? 1.0 : s / sum;
+}
+
+// D for an edge whose occluder distance is d_r - d_b; `prefiltered_px` is the spread (pixels)
+// that S already carries (SHADOW_TEST 2): variances add, so the screen-space filters supply the
+// rest, spread^2 - prefiltered^2.
+float filter_control(float d_r, float d_b, float pixels_per_world, float prefiltered_px) {
   float occluder = max(d_r - d_b, 0.0);  // world units
 #if MAPPING == 0
   float depth_range = max(u_light_far - u_light_near, 1e-6);
@@ -110,6 +147,7 @@ float filter_control(float d_r, float d_b, float pixels_per_world) {
 #else
   // Standard deviation of the edge ramp, pixels.
   float spread = 0.25 * penumbra_width_world(d_r, d_b) * u_light_size_scale * pixels_per_world;
+  spread = sqrt(max(spread * spread - prefiltered_px * prefiltered_px, 0.0));
 #if ALTERATION == 0
   return min(sqrt(12.0) * spread, u_max_kernel);
 #elif ALTERATION == 1
@@ -137,9 +175,32 @@ float write_distance(ivec2 p) {
       value.r = 1.0;
     } else if (in_map) {
       float blocker;
+#if SHADOW_TEST == 2 && MAPPING == 1
+      // Footprint prefilter (not in the paper): a screen-space filter of a per-pixel hard test
+      // cannot make a penumbra narrower than the pixel spacing, nor see a feature between two
+      // pixel centres, so S is the shadow map filtered in light space by a Gaussian of the
+      // penumbra's own spread, at most u_footprint_spread pixels; the blockers found by the
+      // widest one set that spread, and D asks the screen-space passes for the rest.
+      float d_r = light_distance(c.z), blockers;
+      Receiver r;
+      r.coord = c;
+      r.dz_duv = receiver_depth_gradient(u_depth, p, pos.xyz, n, c);
+      float px_per_uv = shape.pixels_per_world * world_per_uv(d_r);
+      float cap_uv = u_footprint_spread / px_per_uv;
+      value.r = prefiltered_shadow(r, cap_uv, blocker, blockers);
+      if (blockers > 0.0) {
+        float spread_uv = 0.25 * penumbra_width_uv(d_r, light_distance(blocker)) * u_light_size_scale;
+        float pre_uv = min(spread_uv, cap_uv);
+        // Shadowed across the widest footprint: the narrower one lies inside it.
+        if (pre_uv < cap_uv && value.r < 1.0) value.r = prefiltered_shadow(r, pre_uv, blocker, blockers);
+        if (blockers > 0.0)
+          value.g = filter_control(d_r, light_distance(blocker), shape.pixels_per_world, pre_uv * px_per_uv);
+      }
+#else
       value.r = hard_shadow(c, blocker);
       if (value.r > 0.0)
-        value.g = filter_control(light_distance(c.z), light_distance(blocker), shape.pixels_per_world);
+        value.g = filter_control(light_distance(c.z), light_distance(blocker), shape.pixels_per_world, 0.0);
+#endif
     }
   }
   imageStore(u_distance_map, p, value);
