@@ -13,8 +13,13 @@ std::optional<TileListCount> dispatched_tiles(const Executor& executor, const gr
     return std::nullopt;
   const gl::Buffer* buffer = executor.physical_buffer(list->physical);
   if (!buffer || buffer->size() < graph::kTileListHeaderBytes) return std::nullopt;
+  // Read through a staging copy: after a CPU read of the list itself, NVIDIA's driver (580, H100)
+  // kept it where the next plan that reused it from the pool ran its tiled passes 2.7x slower
+  // (docs/results/tiles.md, "Reading a tile list back").
   unsigned header[4] = {0, 0, 0, 0};
-  glGetNamedBufferSubData(buffer->id(), 0, sizeof header, header);
+  gl::Buffer staging(sizeof header, nullptr, false);
+  glCopyNamedBufferSubData(buffer->id(), staging.id(), 0, 0, sizeof header);
+  glGetNamedBufferSubData(staging.id(), 0, sizeof header, header);
   TileListCount c;
   c.capacity = static_cast<unsigned>((buffer->size() - graph::kTileListHeaderBytes) / graph::kTileListEntryBytes);
   c.dispatched = std::min(header[0], c.capacity);
