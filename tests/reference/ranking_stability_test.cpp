@@ -6,10 +6,7 @@
 // 256 rays, defaults), so what is checked is what a user's table shows.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -18,25 +15,26 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_support/run_command.h"
 #include "test_support/temp_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const char* const kTechniques = "hard,pcf,pcss,esm,pmchss,mpg,sspcss";
+const std::vector<std::string> kTechniques = {"hard", "pcf", "pcss", "esm", "pmchss", "mpg", "sspcss"};
 constexpr double kOrdered = 1.1;
 
 using Scores = std::map<std::string, double>;  // technique -> soft-penumbra RMSE
 
 Scores eval_scores(const std::string& scene, const std::string& size) {
-  const fs::path dir = penumbra::test::temp_dir("ranking_" + scene + "_" + size);
-  const fs::path json = dir / "eval.json", err = dir / "stderr.txt";
+  const fs::path json = penumbra::test::temp_dir("ranking_" + scene + "_" + size) / "eval.json";
+  std::string techniques;
+  for (const std::string& t : kTechniques) techniques += (techniques.empty() ? "" : ",") + t;
   const std::string cmd = std::string(PENUMBRA_CLI) + " eval --context osmesa --no-cache --frames 1 --scene " + scene +
-                          " --size " + size + " --techniques " + kTechniques + " --json " + json.string() +
-                          " >/dev/null 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << cmd << "\n" << std::ifstream(err).rdbuf();
+                          " --size " + size + " --techniques " + techniques + " --json " + json.string();
+  const penumbra::test::CommandRun run = penumbra::test::run_command(cmd);
+  EXPECT_EQ(run.exit_code, 0) << cmd << "\n" << run.output;
   Scores scores;
   std::ifstream f(json);
   if (!f) return scores;
@@ -73,7 +71,7 @@ class RankingStability : public testing::TestWithParam<const char*> {};
 TEST_P(RankingStability, OrderIsTheSameAt256And768) {
   const std::string scene = GetParam();
   const Scores small = eval_scores(scene, "256x256"), large = eval_scores(scene, "768x768");
-  const size_t n = std::count(kTechniques, kTechniques + std::char_traits<char>::length(kTechniques), ',') + 1;
+  const size_t n = kTechniques.size();
   ASSERT_EQ(small.size(), n);
   ASSERT_EQ(large.size(), n);
   std::printf("[ ranking ] %s 256x256: %s\n[ ranking ] %s 768x768: %s\n", scene.c_str(), ranking(small).c_str(),
