@@ -12,7 +12,7 @@
 #include "techniques/esm/silhouette/silhouette_quads.h"
 
 using namespace penumbra;
-using esm::QuadVertex;
+using esm::SilhouetteQuad;
 
 namespace {
 
@@ -23,11 +23,11 @@ scene::Mesh box_mesh() {
   return m;
 }
 
-// What the vertex shader decides: a quad has area when the light (homogeneous: a point (p, 1)
-// or the direction towards a parallel light (-d, 0)) is in front of exactly one of its planes.
+// What the finding pass and the vertex shader decide: a quad has area when the light
+// (homogeneous: a point (p, 1) or the direction towards a parallel light (-d, 0)) is in front of
+// exactly one of its planes.
 bool opens(const esm::SilhouetteGeometry& g, size_t quad, const glm::vec4& light) {
-  const QuadVertex& v = g.vertices[quad * 4];
-  return (glm::dot(v.plane, light) > 0.0f) != (glm::dot(v.other_plane, light) > 0.0f);
+  return esm::is_silhouette(g.quads[quad], light);
 }
 
 // The silhouette a light sees: the opened quads' edges, as welded-position pairs, and how many
@@ -44,8 +44,8 @@ Silhouette silhouette(const esm::SilhouetteGeometry& g, const glm::vec4& light) 
   for (size_t q = 0; q < g.quad_count(); ++q) {
     if (!opens(g, q, light)) continue;
     ++s.edges;
-    ++s.degree[key(g.vertices[q * 4].position)];
-    ++s.degree[key(g.vertices[q * 4].other_end)];
+    ++s.degree[key(g.quads[q].a)];
+    ++s.degree[key(g.quads[q].b)];
   }
   return s;
 }
@@ -67,13 +67,13 @@ TEST(SilhouetteBuilder, BoxFacesSplitAtUvSeamsWeldIntoTwelveConvexEdges) {
   EXPECT_EQ(s.beveled, 0u);   // 90 degrees: the bisector is still within 45 degrees
   EXPECT_EQ(s.open, 0u);
   EXPECT_EQ(s.quads, 12u);
-  EXPECT_EQ(g->indices.size(), 6u * 12u);
+  EXPECT_EQ(g->quads.size(), 12u);
   // A generic light sees a hexagonal outline: six silhouette edges in one closed loop.
   const Silhouette sil = silhouette(*g, parallel_light({-1.0f, -2.0f, -3.0f}));
   EXPECT_EQ(sil.edges, 6u);
   for (const auto& [p, n] : sil.degree) EXPECT_EQ(n, 2);
   // Every quad's extrusion points away from the box (its centre is the origin).
-  for (const QuadVertex& v : g->vertices) EXPECT_GT(glm::dot(v.extrusion, v.position + v.other_end), 0.0f);
+  for (const SilhouetteQuad& q : g->quads) EXPECT_GT(glm::dot(q.extrusion, q.a + q.b), 0.0f);
 }
 
 TEST(SilhouetteBuilder, SphereSeamWeldsIntoAClosedSurfaceWithClosedSilhouetteLoops) {
@@ -147,10 +147,10 @@ TEST(SilhouetteBuilder, SharpEdgesGetBevelsWhoseExtrusionKeeps70PercentAndPoints
     const glm::vec3 l = glm::normalize(glm::vec3(n01(rng), n01(rng), n01(rng)));  // towards the light
     for (size_t q = 0; q < g->quad_count(); ++q) {
       if (!opens(*g, q, glm::vec4(l, 0.0f))) continue;
-      const QuadVertex& v = g->vertices[q * 4];
+      const SilhouetteQuad& v = g->quads[q];
       const glm::vec3 across = v.extrusion - glm::dot(v.extrusion, l) * l;  // seen from the light
       EXPECT_GE(glm::length(across), 0.7071f - 1e-4f) << "trial " << trial;
-      const glm::vec3 mid = 0.5f * (v.position + v.other_end) - centre;
+      const glm::vec3 mid = 0.5f * (v.a + v.b) - centre;
       EXPECT_GT(glm::dot(across, mid - glm::dot(mid, l) * l), 0.0f) << "extrusion points out";
     }
   }
@@ -261,21 +261,25 @@ TEST(SilhouetteBuilder, MeshesWithNoClosedEdgeOrNoTriangleAtAllWork) {
   EXPECT_EQ(g->stats.quads, 0u);
 }
 
-TEST(SilhouetteBuilder, TooManyQuadsForTheStaticBuffersIsAnErrorNamingTheMesh) {
-  Result<esm::SilhouetteGeometry> g = esm::build_silhouette_quads(box_mesh(), {.max_quads = 5});
+TEST(SilhouetteBuilder, MoreEdgesThanTheLimitIsAnErrorNamingTheMeshAndTheLimit) {
+  // The box has 18 welded edges; a limit of 17 refuses it, 18 takes it.
+  Result<esm::SilhouetteGeometry> g = esm::build_silhouette_quads(box_mesh(), {.max_edges = 17});
   ASSERT_FALSE(g);
   const std::string msg = g.error().to_string();
   EXPECT_NE(msg.find("mesh 'box'"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("12 silhouette quads"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("at most 5"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("has 18 edges"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("at most 17 edges per mesh"), std::string::npos) << msg;
   EXPECT_EQ(g.error().exit_code(), 2);
+  EXPECT_TRUE(esm::build_silhouette_quads(box_mesh(), {.max_edges = 18}));
   scene::Scene s;
   s.materials.push_back({});
   s.meshes = {scene::Mesh{.name = "tiny"}, box_mesh()};
-  Result<std::vector<esm::SilhouetteGeometry>> all = esm::build_scene_silhouettes(s, {.max_quads = 5});
+  Result<std::vector<esm::SilhouetteGeometry>> all = esm::build_scene_silhouettes(s, {.max_edges = 17});
   ASSERT_FALSE(all);
   EXPECT_NE(all.error().to_string().find("scene mesh 1 'box'"), std::string::npos) << all.error().to_string();
-  EXPECT_GT(esm::kMaxQuadsPerMesh, size_t{1} << 20);  // the real limit: millions of quads
+  // The shipped limit is 2^24 edges, and the message names it.
+  EXPECT_EQ(esm::kMaxEdgesPerMesh, size_t{1} << 24);
+  EXPECT_EQ(esm::SilhouetteOptions{}.max_edges, esm::kMaxEdgesPerMesh);
 }
 
 TEST(SilhouetteBuilder, AlphaMaskedMeshesCastNoQuads) {

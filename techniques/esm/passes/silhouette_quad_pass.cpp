@@ -1,5 +1,6 @@
-// esm_silhouette_quads: the silhouette quads of every mesh instance, face by face, into the
-// extended shadow map (Bujnak, section 4.1). blend = max: MAX blending, so where quads overlap
+// esm_silhouette_quads: this frame's silhouette quads, found in a compute pass over every quad
+// of every mesh instance, then drawn face by face into the extended shadow map (Bujnak,
+// section 4.1). blend = max: MAX blending, so where quads overlap
 // the map keeps the farthest edge depth and the most shadowed edge value (the paper's "maximal
 // depth, minimal distance"); the depth pass's neutral defaults make one pass enough. blend =
 // overwrite: no blending, r and g replaced by whichever quad comes last: the first pass of the
@@ -23,8 +24,12 @@ class SilhouetteQuadPass final : public exec::PassImpl {
     auto buffers = SilhouetteBuffers::for_scene(*ctx.frame().scene);
     if (!buffers) return buffers.error();
     buffers_ = *buffers;  // keeps the shared buffers alive while this pass exists
+    gl::ShaderProgram& find = ctx.program({.compute = "techniques/esm/shaders/silhouette_find.comp.glsl",
+                                           .defines = silhouette_shader_defines()});
+    if (!find.valid()) return *find.last_error();
     gl::ShaderProgram& p = ctx.program({.vertex = "techniques/esm/shaders/silhouette_quad.vert.glsl",
-                                        .fragment = "techniques/esm/shaders/silhouette_quad.frag.glsl"});
+                                        .fragment = "techniques/esm/shaders/silhouette_quad.frag.glsl",
+                                        .defines = silhouette_shader_defines()});
     if (!p.valid()) return *p.last_error();
     gl::Texture& esm = ctx.texture("esm");
     Result<EsmViews> views = frame_views(ctx, esm.width());
@@ -35,6 +40,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       if (Status s = fb_.finish(); !s) return s;
       attached_ = esm.id();
     }
+    buffers_->find(find.program(), views->light);  // one light, so one list for every face
     const gl::Program& prog = p.program();
     set_view_uniforms(prog, *views);
     prog.set("u_light", views->light);
@@ -56,7 +62,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       prog.set("u_inv_view_proj", glm::inverse(f.view_proj));
       prog.set("u_tile_size", static_cast<float>(f.size));
       prog.set("u_tile_origin", glm::vec2(f.origin));
-      buffers_->draw(prog);
+      buffers_->draw_found(prog);
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

@@ -14,6 +14,9 @@
 //   a, and the nearest texel is not inside its edge -> 0: it is covered by an occluder other
 //       than that edge's own surface (another object whose edge crosses, Figures 9-11), which no
 //       edge may lighten (no lit holes where silhouettes cross);
+//   a texel of the footprint deep inside its edge (guard zone) with nothing in front of the
+//       receiver -> a ? 0 : 1: the edge data contradicts the depth map, as it does where dense
+//       silhouettes overlap (thin objects, neighbours a few texels apart);
 //   otherwise -> the bilinear lit-ness decides, with a ramp one pixel wide on screen. A texel
 //       contributes its quad's lit-ness (0 when it lies outside its edge and is occluded in front
 //       of the receiver: the same rule per texel), or its plain depth test's 0 or 1 without one.
@@ -69,6 +72,12 @@ float litness(vec4 texel, float depth, float z) {
   return occluded && l >= edge_litness() ? 0.0 : l;
 }
 
+// The texel's quad puts it deep inside an occluder (the guard zone: lit-ness 0), yet the plain
+// test finds nothing in front of the receiver there. One edge cannot say that: it is the inner
+// band of an object thinner than the band, or of a neighbouring silhouette, lying over lit
+// ground (dense silhouettes, where MAX kept the most shadowed of several edges).
+bool contradicts(vec4 texel, float depth, float z) { return has_quad(texel) && texel.r >= 1.0 && z <= depth; }
+
 float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   int face = esm_face(world);
   vec4 c = esm_map_coord(face, world);
@@ -113,6 +122,13 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   bool own_edge = has_quad(tn) && 1.0 - tn.r < edge_litness();
   if (a && !own_edge) return 0.0;
   // Bilinear lit-ness and its gradient (per texel).
+  // Edge data that contradicts the depth map anywhere in the footprint: the plain answer, so esm is
+  // never worse than the map it extends. Measured edge error on showcase's pickets (llvmpipe,
+  // 384x288, tests/esm/edge_error_test.cpp), esm / plain: 256^2 0.0871 / 0.0858 before, 0.0755
+  // with this rule; 512^2 0.0355 / 0.0502 before, 0.0373. Per texel instead (the texel's plain
+  // 0 or 1 in the interpolation) gave 0.0763 and 0.0422.
+  if (contradicts(t00, d00, z) || contradicts(t10, d10, z) || contradicts(t01, d01, z) || contradicts(t11, d11, z))
+    return a ? 0.0 : 1.0;
   float l00 = litness(t00, d00, z), l10 = litness(t10, d10, z), l01 = litness(t01, d01, z), l11 = litness(t11, d11, z);
   // All four texels inside the boundary: so is the receiver. (Inside, the lit-ness is flat in the
   // guard zone, so the ramp below, extrapolated from the local gradient, would call receivers

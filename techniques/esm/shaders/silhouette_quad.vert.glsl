@@ -1,5 +1,7 @@
 #version 450 core
 // Silhouette quads (Bujnak, section 4.1, Figures 3 and 4), one face (tile) of the map at a time.
+// Six vertices per quad that the finding pass listed as a silhouette this frame (drawn
+// indirectly, silhouette_find.comp.glsl); each builds its corner from the quad's record.
 //
 // Each vertex sits at one end of its edge and follows ONE of the edge's two facet planes: when
 // the light is in front of that plane it moves outwards across the silhouette, when behind it
@@ -12,13 +14,7 @@
 // extrusion vector only says which side is outside: the bevel quads (Figure 5) keep it within
 // 45 degrees of the silhouette's outward direction, so its projection is never ambiguous.
 #include "esm_common.glsl"
-layout(location = 0) in vec3 a_position;     // this end of the edge (object space)
-layout(location = 1) in vec3 a_other_end;
-layout(location = 2) in vec4 a_plane;        // the facet plane this vertex follows
-layout(location = 3) in vec4 a_other_plane;
-layout(location = 4) in vec3 a_extrusion;    // unit, away from the mesh
-uniform mat4 u_model;          // object -> world
-uniform mat4 u_plane_matrix;   // inverse transpose of u_model: object planes -> world planes
+#include "silhouette_records.glsl"
 uniform mat4 u_view_proj;      // the face's world -> clip
 uniform vec4 u_light;          // homogeneous light: (position, 1), or (-direction, 0)
 uniform float u_tile_size;     // texels
@@ -35,9 +31,24 @@ void collapse() {
   v_front_plane = vec4(0.0);
 }
 
+// The two triangles of a quad: (0, 1, 2), (2, 1, 3). Corner k sits at end a (k < 2) or b, and
+// follows plane p (k even) or q.
+const int kCorner[6] = int[](0, 1, 2, 2, 1, 3);
+
 void main() {
-  vec4 world0 = u_model * vec4(a_position, 1.0);
-  vec4 world1 = u_model * vec4(a_other_end, 1.0);
+  uvec2 listed = silhouettes[gl_VertexID / 6];
+  int corner = kCorner[gl_VertexID % 6];
+  uint quad = listed.y;
+  SilhouetteInstance instance = silhouette_instances[listed.x];
+  mat4 model = instance.model;
+  mat4 plane_matrix = instance.planes;
+  vec3 position = corner < 2 ? quad_a(quad) : quad_b(quad);
+  vec3 other_end = corner < 2 ? quad_b(quad) : quad_a(quad);
+  vec4 followed_plane = (corner & 1) == 0 ? quad_p(quad) : quad_q(quad);
+  vec4 other_plane = (corner & 1) == 0 ? quad_q(quad) : quad_p(quad);
+  vec3 extrusion = quad_extrusion(quad);
+  vec4 world0 = model * vec4(position, 1.0);
+  vec4 world1 = model * vec4(other_end, 1.0);
   vec4 c0 = u_view_proj * world0, c1 = u_view_proj * world1;
   // Clip the edge to the near plane (z >= -w): the same result at both ends' vertices.
   float n0 = c0.z + c0.w, n1 = c1.z + c1.w;
@@ -52,7 +63,7 @@ void main() {
   along /= len;
   // Outside: the side the extrusion vector points to, seen from the light. Its screen direction
   // at c0 is d(ndc) ~ e.xy c0.w - c0.xy e.w (the derivative of the perspective divide).
-  vec4 e = u_view_proj * vec4(normalize(mat3(u_model) * a_extrusion), 0.0);
+  vec4 e = u_view_proj * vec4(normalize(mat3(model) * extrusion), 0.0);
   vec2 toward = e.xy * c0.w - c0.xy * e.w;
   vec2 normal = vec2(-along.y, along.x);
   vec2 outward = dot(toward, normal) >= 0.0 ? normal : -normal;
@@ -60,7 +71,7 @@ void main() {
   // margin beyond the band (the fragment shader cuts the band exactly). Beyond its ends the quad
   // reaches BAND_OUT further along the edge, for the outside of convex corners (see the
   // fragment shader).
-  vec4 plane = u_plane_matrix * a_plane;
+  vec4 plane = plane_matrix * followed_plane;
   bool front = dot(plane, u_light) > 0.0;
   vec2 offset = front ? outward * (BAND_OUT + 0.5) : -outward * (BAND_IN + 0.5);
   offset -= along * (BAND_OUT + 0.5);  // this end is p0: extend away from p1
@@ -72,5 +83,5 @@ void main() {
   v_outward = outward;
   // On a silhouette exactly one plane faces the light; the occluder lies behind it (a convex
   // edge's facets and bevel are supporting planes).
-  v_front_plane = front ? plane : u_plane_matrix * a_other_plane;
+  v_front_plane = front ? plane : plane_matrix * other_plane;
 }

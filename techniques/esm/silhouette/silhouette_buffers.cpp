@@ -1,7 +1,7 @@
 #include "techniques/esm/silhouette/silhouette_buffers.h"
 
+#include <algorithm>
 #include <chrono>
-#include <cstddef>
 #include <cstdint>
 #include <mutex>
 
@@ -10,6 +10,21 @@
 
 namespace penumbra::esm {
 namespace {
+
+// One instance as shaders/silhouette_records.glsl reads it (std430: 144 bytes).
+struct InstanceRecord {
+  glm::mat4 model{1.0f};   // object -> world
+  glm::mat4 planes{1.0f};  // inverse transpose of model: planes are covectors
+  std::uint32_t first_quad = 0, quad_count = 0;
+  std::uint32_t first_slot = 0;  // this instance's first thread of the finding pass
+  std::uint32_t unused = 0;
+};
+static_assert(sizeof(InstanceRecord) == 144);
+
+// glDrawArraysIndirect's command; find() counts six vertices per silhouette into `count`.
+struct DrawCommand {
+  std::uint32_t count = 0, instance_count = 1, first = 0, base_instance = 0;
+};
 
 // One remembered scene, by GpuScene::serial() (an address is reused by the next scene made
 // there), like the Embree cache.
@@ -39,40 +54,77 @@ void add(SilhouetteStats& total, const SilhouetteStats& s) {
   total.quads += s.quads;
 }
 
+GLint gl_limit(GLenum name) {
+  GLint v = 0;
+  glGetIntegerv(name, &v);
+  return v;
+}
+
+std::string mib(size_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB"; }
+
 }  // namespace
+
+std::vector<std::pair<std::string, std::string>> silhouette_shader_defines() {
+  return {{"SILHOUETTE_QUADS_BINDING", std::to_string(SilhouetteBindings::quads)},
+          {"SILHOUETTE_INSTANCES_BINDING", std::to_string(SilhouetteBindings::instances)},
+          {"SILHOUETTE_LIST_BINDING", std::to_string(SilhouetteBindings::list)},
+          {"SILHOUETTE_COMMAND_BINDING", std::to_string(SilhouetteBindings::command)},
+          {"SILHOUETTE_FIND_GROUP", std::to_string(kFindGroupSize)}};
+}
 
 Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const exec::GpuScene& gpu) {
   Cache& c = cache();
   std::lock_guard<std::mutex> lock(c.mutex);
   const scene::Scene& s = gpu.cpu();
   if (auto alive = c.buffers.lock(); alive && c.scene == gpu.serial()) return alive;
+  if (const GLint blocks = gl_limit(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS); blocks < 3)
+    return make_error("esm: this OpenGL lets a vertex shader read " + std::to_string(blocks) +
+                      " storage buffers; the silhouette quads need 3 (GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS)");
   const auto t0 = std::chrono::steady_clock::now();
   Result<std::vector<SilhouetteGeometry>> geometry = build_scene_silhouettes(s);
   if (!geometry) return geometry.error();
-  std::shared_ptr<SilhouetteBuffers> out(new SilhouetteBuffers(s.instances));
-  for (const SilhouetteGeometry& g : *geometry) {
+  std::shared_ptr<SilhouetteBuffers> out(new SilhouetteBuffers());
+  std::vector<SilhouetteQuad> quads;
+  std::vector<size_t> first_quad(geometry->size(), 0);
+  for (size_t m = 0; m < geometry->size(); ++m) {
+    const SilhouetteGeometry& g = (*geometry)[m];
     add(out->totals_, g.stats);
-    MeshBuffers m;
-    m.index_count = static_cast<GLsizei>(g.indices.size());
-    if (m.index_count > 0) {
-      m.vertices = gl::Buffer(g.vertices.size() * sizeof(QuadVertex), g.vertices.data(), false);
-      m.indices = gl::Buffer(g.indices.size() * sizeof(uint32_t), g.indices.data(), false);
-      GLuint vao = 0;
-      glCreateVertexArrays(1, &vao);
-      m.vao = gl::GlHandle<gl::delete_vertex_array>(vao);
-      glVertexArrayVertexBuffer(vao, 0, m.vertices.id(), 0, sizeof(QuadVertex));
-      glVertexArrayElementBuffer(vao, m.indices.id());
-      const GLuint offsets[5] = {offsetof(QuadVertex, position), offsetof(QuadVertex, other_end),
-                                 offsetof(QuadVertex, plane), offsetof(QuadVertex, other_plane),
-                                 offsetof(QuadVertex, extrusion)};
-      const GLint sizes[5] = {3, 3, 4, 4, 3};
-      for (GLuint a = 0; a < 5; ++a) {
-        glEnableVertexArrayAttrib(vao, a);
-        glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
-        glVertexArrayAttribBinding(vao, a, 0);
-      }
-    }
-    out->meshes_.push_back(std::move(m));
+    first_quad[m] = quads.size();
+    quads.insert(quads.end(), g.quads.begin(), g.quads.end());
+  }
+  std::vector<InstanceRecord> instances;
+  size_t slots = 0;
+  for (const scene::Instance& inst : s.instances) {
+    if (inst.mesh >= geometry->size() || (*geometry)[inst.mesh].quads.empty()) continue;
+    InstanceRecord r;
+    r.model = inst.world;
+    r.planes = glm::inverseTranspose(inst.world);
+    r.first_quad = static_cast<std::uint32_t>(first_quad[inst.mesh]);
+    r.quad_count = static_cast<std::uint32_t>((*geometry)[inst.mesh].quads.size());
+    r.first_slot = static_cast<std::uint32_t>(slots);
+    slots += r.quad_count;
+    instances.push_back(r);
+  }
+  // Every buffer is one storage block: each must fit the largest one the GL allows, and the
+  // finding pass counts instance quads in 32 bits.
+  const size_t largest = static_cast<size_t>(std::max<GLint>(gl_limit(GL_MAX_SHADER_STORAGE_BLOCK_SIZE), 0));
+  const size_t quad_bytes = quads.size() * sizeof(SilhouetteQuad), list_bytes = slots * 2 * sizeof(std::uint32_t);
+  if (std::max(quad_bytes, list_bytes) > largest || slots > UINT32_MAX / 6)
+    return make_error("esm: the scene has " + std::to_string(quads.size()) + " silhouette quads (" +
+                      std::to_string(slots) + " over its instances), which need storage buffers of " +
+                      mib(quad_bytes) + " and " + mib(list_bytes) + "; this OpenGL's largest is " + mib(largest) +
+                      " (GL_MAX_SHADER_STORAGE_BLOCK_SIZE): use fewer or simpler meshes, or another technique");
+  out->instance_count_ = instances.size();
+  out->instance_quads_ = slots;
+  if (slots > 0) {
+    out->quads_ = gl::Buffer::from<SilhouetteQuad>(quads);
+    out->instances_ = gl::Buffer::from<InstanceRecord>(instances);
+    out->list_ = gl::Buffer(list_bytes, nullptr, false);
+    const DrawCommand empty;
+    out->command_ = gl::Buffer(sizeof empty, &empty, true);
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    out->vao_ = gl::GlHandle<gl::delete_vertex_array>(vao);
   }
   const SilhouetteStats& t = out->totals_;
   spdlog::info("esm: {} silhouette quads for {} edges of {} triangles ({} open, {} non-manifold, {} bevelled, "
@@ -84,21 +136,46 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
   return out;
 }
 
-void SilhouetteBuffers::draw(const gl::Program& program) const {
+void SilhouetteBuffers::bind_records() const {
+  quads_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::quads);
+  instances_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::instances);
+  list_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::list);
+}
+
+void SilhouetteBuffers::find(const gl::Program& program, const glm::vec4& light) const {
+  if (instance_quads_ == 0) return;
+  const DrawCommand empty;
+  glNamedBufferSubData(command_.id(), 0, sizeof empty, &empty);
+  bind_records();
+  command_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::command);
+  program.set("u_light", light);
+  program.set("u_instance_count", static_cast<int>(instance_count_));
+  program.set("u_instance_quads", static_cast<int>(instance_quads_));
+  // One thread a quad of an instance; past 65535 groups a second dimension takes the rest.
+  const size_t groups = (instance_quads_ + kFindGroupSize - 1) / kFindGroupSize;
+  const GLuint gx = static_cast<GLuint>(std::min<size_t>(groups, 65535));
+  const GLuint gy = static_cast<GLuint>((groups + gx - 1) / gx);
   glUseProgram(program.id());
-  const GLint loc_model = program.uniform_location("u_model");
-  const GLint loc_planes = program.uniform_location("u_plane_matrix");
-  for (const scene::Instance& inst : instances_) {
-    if (inst.mesh >= meshes_.size() || meshes_[inst.mesh].index_count == 0) continue;
-    const MeshBuffers& m = meshes_[inst.mesh];
-    // Planes are covectors: a world plane is transpose(inverse(M)) times the object plane.
-    const glm::mat4 planes = glm::inverseTranspose(inst.world);
-    glProgramUniformMatrix4fv(program.id(), loc_model, 1, GL_FALSE, &inst.world[0][0]);
-    glProgramUniformMatrix4fv(program.id(), loc_planes, 1, GL_FALSE, &planes[0][0]);
-    glBindVertexArray(m.vao.id());
-    glDrawElements(GL_TRIANGLES, m.index_count, GL_UNSIGNED_INT, nullptr);
-  }
+  glDispatchCompute(gx, gy, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+void SilhouetteBuffers::draw_found(const gl::Program& program) const {
+  if (instance_quads_ == 0) return;
+  bind_records();
+  glUseProgram(program.id());
+  glBindVertexArray(vao_.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
+  glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
+}
+
+size_t SilhouetteBuffers::found() const {
+  if (instance_quads_ == 0) return 0;
+  DrawCommand c;
+  glGetNamedBufferSubData(command_.id(), 0, sizeof c, &c);
+  return c.count / 6;
 }
 
 }  // namespace penumbra::esm

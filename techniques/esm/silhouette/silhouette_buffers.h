@@ -1,17 +1,25 @@
 #pragma once
-// The silhouette quads of a scene in static GPU buffers: one vertex buffer, one index buffer and
-// one vertex array per mesh (object space), built once from the CPU builder and drawn for every
-// instance of the mesh with its world matrix. Shared by every pass that draws quads: a pass
-// holds the shared_ptr; the cache only remembers it (weak_ptr), so the GL objects die with the
-// last pass that uses them, while a GL context is current.
-//
-// Vertex attributes (silhouette_quad.vert.glsl): 0 position, 1 other_end, 2 plane,
-// 3 other_plane, 4 extrusion (QuadVertex).
+// The silhouette quads of a scene on the GPU, built once from the CPU builder, and the two steps
+// that turn them into this frame's silhouettes without a read-back:
+//  - find(): a compute pass tests every quad of every instance against the light (the light in
+//    front of exactly one of its planes: is_silhouette) and appends the silhouettes to a list,
+//    counting them into an indirect draw command;
+//  - draw_found(): draws six vertices per listed quad, indirectly; the vertex shader builds the
+//    quad's corners from its record. Raster work grows with the silhouettes, not with the mesh.
+// One storage buffer holds every mesh's quads (SilhouetteQuad records, 68 bytes each), one the
+// instances (world matrix, plane matrix, where the mesh's quads start). Shared by every pass
+// that draws quads: a pass holds the shared_ptr; the cache only remembers it (weak_ptr), so the
+// GL objects die with the last pass that uses them, while a GL context is current.
 //
 //   Result<std::shared_ptr<SilhouetteBuffers>> b = SilhouetteBuffers::for_scene(*frame.scene);
-//   (*b)->draw(program);  // sets u_model and u_plane_matrix per instance
+//   (*b)->find(find_program, light);          // shaders/silhouette_find.comp.glsl
+//   (*b)->draw_found(quad_program);           // shaders/silhouette_quad.vert.glsl, per face
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "exec/gpu_scene.h"
 #include "gl/buffer.h"
@@ -22,29 +30,44 @@
 
 namespace penumbra::esm {
 
+// The storage-buffer bindings of shaders/silhouette_records.glsl. The shaders get them as
+// defines (silhouette_shader_defines), so these numbers are the only place they are written.
+struct SilhouetteBindings {
+  static constexpr unsigned quads = 0, instances = 1, list = 2, command = 3;
+};
+std::vector<std::pair<std::string, std::string>> silhouette_shader_defines();
+
+// Work-group size of the finding pass (its local_size_x, passed as a define as well).
+inline constexpr unsigned kFindGroupSize = 256;
+
 class SilhouetteBuffers {
  public:
   // The buffers of `scene`, built on first use (and again when a different scene is set).
-  // Errors: a mesh with more quads than the buffers hold (the Error names it).
+  // Errors: a mesh with more edges than the builder takes (the Error names it); a scene whose
+  // quads or silhouette list exceed the GL's largest storage buffer; a GL whose vertex shaders
+  // cannot read three storage buffers.
   static Result<std::shared_ptr<SilhouetteBuffers>> for_scene(const exec::GpuScene& scene);
 
-  // Draws the quads of every instance (meshes without quads are skipped): sets u_model (object
-  // -> world) and u_plane_matrix (its inverse transpose: object planes -> world planes).
-  void draw(const gl::Program& program) const;
+  // This frame's silhouettes from `light` (homogeneous: (position, 1), or (-direction, 0)) into
+  // the list and the draw command. Ends with the barriers the indirect draw needs.
+  void find(const gl::Program& find_program, const glm::vec4& light) const;
+  // Draws the quads the last find() listed with `program` (six vertices a quad, indirect).
+  void draw_found(const gl::Program& program) const;
+  // How many quads the last find() listed (a read-back: for tests and statistics only).
+  size_t found() const;
 
   const SilhouetteStats& totals() const { return totals_; }
   size_t quads() const { return totals_.quads; }
+  // Quads over all instances: the finding pass's threads, and the list's capacity.
+  size_t instance_quads() const { return instance_quads_; }
 
  private:
-  struct MeshBuffers {
-    gl::Buffer vertices, indices;
-    gl::GlHandle<gl::delete_vertex_array> vao;
-    GLsizei index_count = 0;
-  };
-  explicit SilhouetteBuffers(std::vector<scene::Instance> instances) : instances_(std::move(instances)) {}
-  std::vector<scene::Instance> instances_;  // a copy: the buffers may outlive the GpuScene
-  std::vector<MeshBuffers> meshes_;
+  SilhouetteBuffers() = default;
+  void bind_records() const;
+  gl::Buffer quads_, instances_, list_, command_;
+  gl::GlHandle<gl::delete_vertex_array> vao_;  // empty: the vertex shader reads the buffers
   SilhouetteStats totals_;
+  size_t instance_count_ = 0, instance_quads_ = 0;
 };
 
 }  // namespace penumbra::esm

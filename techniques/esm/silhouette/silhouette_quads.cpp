@@ -24,12 +24,7 @@ class QuadWriter {
 
   // One degenerate quad between planes p and q along edge a-b, extruded along `extrusion`.
   void quad(const glm::vec3& a, const glm::vec3& b, const glm::vec4& p, const glm::vec4& q, const glm::vec3& extrusion) {
-    const uint32_t base = static_cast<uint32_t>(out_.vertices.size());
-    out_.vertices.push_back({a, b, p, q, extrusion});
-    out_.vertices.push_back({a, b, q, p, extrusion});
-    out_.vertices.push_back({b, a, p, q, extrusion});
-    out_.vertices.push_back({b, a, q, p, extrusion});
-    out_.indices.insert(out_.indices.end(), {base, base + 1, base + 2, base + 2, base + 1, base + 3});
+    out_.quads.push_back({a, b, p, q, extrusion});
   }
 
   // Facet normals n1, n2 meeting at more than 90 degrees (or folded flat, 180): two quads with
@@ -91,6 +86,14 @@ Result<SilhouetteGeometry> build_silhouette_quads(const scene::Mesh& mesh, const
   st.facets = adj.facets.size();
   st.degenerate_triangles = adj.degenerate_triangles;
   st.edges = adj.edges.size();
+  if (st.edges > options.max_edges) {
+    Error err = make_error("mesh '" + mesh.name + "' has " + std::to_string(st.edges) + " edges (" +
+                           std::to_string(st.facets) + " triangles); extended shadow maps take at most " +
+                           std::to_string(options.max_edges) +
+                           " edges per mesh: split the mesh or use another technique");
+    err.where = "mesh '" + mesh.name + "'";
+    return err;
+  }
   QuadWriter writer(out);
   for (const Edge& e : adj.edges) {
     const EdgeUse* uses = &adj.uses[e.first_use];
@@ -134,14 +137,6 @@ Result<SilhouetteGeometry> build_silhouette_quads(const scene::Mesh& mesh, const
     writer.beveled(a, b, n1, n2, normalized_or(n1 + n2, normalized_or(flat, n1)));
   }
   st.quads = out.quad_count();
-  if (st.quads > options.max_quads) {
-    Error err = make_error("mesh '" + mesh.name + "' needs " + std::to_string(st.quads) + " silhouette quads (" +
-                           std::to_string(st.edges) + " edges of " + std::to_string(st.facets) +
-                           " triangles); the static silhouette buffers hold at most " +
-                           std::to_string(options.max_quads) + " quads per mesh: split the mesh or use another technique");
-    err.where = "mesh '" + mesh.name + "'";
-    return err;
-  }
   return out;
 }
 

@@ -7,7 +7,10 @@
 // the two facets, the other facet's plane, and the quad's extrusion vector (Figure 3). The
 // vertex shader moves a vertex outwards when the light is in front of its plane and inwards when
 // behind it (Figure 4), so a quad has area exactly when the light separates its two planes, i.e.
-// when the edge is a silhouette; otherwise its four vertices collapse onto two points.
+// when the edge is a silhouette. The paper draws every quad and lets the others collapse; here a
+// compute pass first keeps the quads that are silhouettes this frame (is_silhouette), so the
+// raster work grows with the silhouettes, not with the mesh (silhouette_buffers.h). One record
+// per quad holds what its four vertices need (SilhouetteQuad).
 //
 // Which edges get quads, and how (every choice counted in SilhouetteStats):
 //  - a closed mesh (no open, non-manifold or inconsistent edge) wound inside out (negative
@@ -41,22 +44,31 @@
 
 namespace penumbra::esm {
 
-// One vertex of a degenerate quad; 17 floats, the vertex buffer's layout (object space).
-struct QuadVertex {
-  glm::vec3 position{0.0f};     // this end of the edge
-  glm::vec3 other_end{0.0f};    // the other end
-  glm::vec4 plane{0.0f};        // the facet plane this vertex follows: n . x + w = 0, n unit
-  glm::vec4 other_plane{0.0f};  // the quad's other plane
-  glm::vec3 extrusion{0.0f};    // unit, away from the mesh across the silhouette
+// One degenerate quad (object space), 17 floats, the layout of the storage buffer the GPU finds
+// silhouettes in and draws from (shaders/silhouette_records.glsl). Its four vertices are made in
+// the vertex shader: vertex k sits at `a` (k = 0, 1) or `b` (k = 2, 3) and follows plane `p`
+// (k even) or `q` (k odd); each vertex also knows the other end and the other plane.
+struct SilhouetteQuad {
+  glm::vec3 a{0.0f}, b{0.0f};  // the edge's ends
+  glm::vec4 p{0.0f}, q{0.0f};  // the two planes: n . x + w = 0, n unit
+  glm::vec3 extrusion{0.0f};   // unit, away from the mesh across the silhouette
 };
-static_assert(sizeof(QuadVertex) == 17 * sizeof(float));
+static_assert(sizeof(SilhouetteQuad) == 17 * sizeof(float));
 
-// Quads per mesh the static buffers hold: 1 GiB of vertices (4 x 68 bytes per quad).
-inline constexpr size_t kMaxQuadsPerMesh = (size_t{1} << 30) / (4 * sizeof(QuadVertex));
+// The quad is a silhouette from `light` (homogeneous: (position, 1), or (-direction, 0)) when the
+// light is in front of exactly one of its planes; what the finding pass and the vertex shader test.
+inline bool is_silhouette(const SilhouetteQuad& quad, const glm::vec4& light) {
+  return (glm::dot(quad.p, light) > 0.0f) != (glm::dot(quad.q, light) > 0.0f);
+}
+
+// Edges a mesh may have: 2^24 (16,777,216). More is an Error naming the mesh and this limit.
+// Every edge gives at most two quads (a bevel) per facet using it, so the per-mesh buffers stay
+// within a few GiB at worst; the scene's total must also fit the GL's largest storage buffer.
+inline constexpr size_t kMaxEdgesPerMesh = size_t{1} << 24;
 
 struct SilhouetteOptions {
   float weld_tolerance = 1e-6f;          // x the mesh's bounding-box diagonal
-  size_t max_quads = kMaxQuadsPerMesh;   // more is an Error naming the mesh
+  size_t max_edges = kMaxEdgesPerMesh;   // more is an Error naming the mesh
 };
 
 struct SilhouetteStats {
@@ -68,15 +80,14 @@ struct SilhouetteStats {
 };
 
 struct SilhouetteGeometry {
-  std::vector<QuadVertex> vertices;  // 4 per quad
-  std::vector<uint32_t> indices;     // 6 per quad: (0, 1, 2), (2, 1, 3)
+  std::vector<SilhouetteQuad> quads;
   SilhouetteStats stats;
-  size_t quad_count() const { return vertices.size() / 4; }
+  size_t quad_count() const { return quads.size(); }
 };
 
 // The quads of one mesh. Bad geometry (degenerate or zero-area triangles, open or non-manifold
-// edges, no closed edge at all) is handled, never an error; more quads than options.max_quads is
-// an Error naming the mesh.
+// edges, no closed edge at all) is handled, never an error; more welded edges than
+// options.max_edges is an Error naming the mesh and the limit, found before any quad is made.
 Result<SilhouetteGeometry> build_silhouette_quads(const scene::Mesh& mesh, const SilhouetteOptions& options = {});
 
 // Alpha-masked materials get no quads: their shadow edges come from the texture's alpha (the
