@@ -21,27 +21,10 @@ flat in vec2 v_end0;
 flat in vec2 v_end1;
 flat in vec2 v_depth;
 flat in vec2 v_outward;
-flat in vec4 v_front_plane;
+flat in vec3 v_front_depth;  // the front plane's window depth: dot(xy, tile texel) + z (-1: none)
 uniform vec2 u_tile_origin;       // texels
 uniform sampler2D u_depth;        // the depth pass's (biased) depth, whole map
 uniform float u_hidden_tolerance; // texel footprints (world size of a texel at the edge's distance)
-uniform mat4 u_view_proj;         // the face's world -> clip
-uniform mat4 u_inv_view_proj;     // and back
-uniform float u_tile_size;        // texels
-
-// Window depth where the light's ray through texel centre f (tile texels) meets `plane`; -1 when
-// the ray runs along it.
-float depth_on_plane(vec2 f, vec4 plane) {
-  vec2 ndc = f / u_tile_size * 2.0 - 1.0;
-  vec4 h0 = u_inv_view_proj * vec4(ndc, -1.0, 1.0), h1 = u_inv_view_proj * vec4(ndc, 1.0, 1.0);
-  vec3 a = h0.xyz / h0.w, b = h1.xyz / h1.w;
-  float denom = dot(plane.xyz, b - a);
-  if (abs(denom) < 1e-12) return -1.0;
-  float t = -dot(plane, vec4(a, 1.0)) / denom;
-  if (t < 0.0 || t > 1.0) return -1.0;
-  vec4 c = u_view_proj * vec4(mix(a, b, t), 1.0);
-  return c.z / c.w * 0.5 + 0.5;
-}
 
 // The texel's surface (depth attachment) is nearer the light than window depth `depth` by more
 // than the tolerance.
@@ -69,7 +52,7 @@ void main() {
   if (d >= 0.0) {
     if (nearer_surface(edge_depth)) discard;
   } else {
-    float own = depth_on_plane(f, v_front_plane);
+    float own = dot(v_front_depth.xy, f) + v_front_depth.z;
     if (own >= 0.0 && own <= 1.0 && nearer_surface(own)) discard;
   }
   o_esm = esm_encode_quad(1.0 - edge_transfer(quad_coordinate(d)), edge_depth);

@@ -1,7 +1,8 @@
 #version 450 core
 // Silhouette quads (Bujnak, section 4.1, Figures 3 and 4), one face (tile) of the map at a time.
-// Six vertices per quad that the finding pass listed as a silhouette this frame (drawn
-// indirectly, silhouette_find.comp.glsl); each builds its corner from the quad's record.
+// Four vertices per quad that the finding pass listed as a silhouette this frame (drawn
+// indirectly, silhouette_find.comp.glsl, through a fixed index buffer: list entry i is vertices
+// 4i .. 4i + 3); each builds its corner from the quad's record.
 //
 // Each vertex sits at one end of its edge and follows ONE of the edge's two facet planes: when
 // the light is in front of that plane it moves outwards across the silhouette, when behind it
@@ -16,28 +17,37 @@
 #include "esm_common.glsl"
 #include "silhouette_records.glsl"
 uniform mat4 u_view_proj;      // the face's world -> clip
+uniform mat4 u_inv_view_proj;  // and back
 uniform vec4 u_light;          // homogeneous light: (position, 1), or (-direction, 0)
 uniform float u_tile_size;     // texels
 flat out vec2 v_end0;          // the edge's ends in tile texels (window coordinates)
 flat out vec2 v_end1;
 flat out vec2 v_depth;         // their window depths
 flat out vec2 v_outward;       // unit, texel space, across the edge away from the occluder
-flat out vec4 v_front_plane;   // world plane of the facet facing the light (or the bevel's)
+flat out vec3 v_front_depth;   // window depth of the plane facing the light: dot(xy, tile texel) + z
 
 // Collapses the vertex (no area, nothing rasterised).
 void collapse() {
   gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
   v_end0 = v_end1 = v_depth = v_outward = vec2(0.0);
-  v_front_plane = vec4(0.0);
+  v_front_depth = vec3(0.0);
 }
 
-// The two triangles of a quad: (0, 1, 2), (2, 1, 3). Corner k sits at end a (k < 2) or b, and
-// follows plane p (k even) or q.
-const int kCorner[6] = int[](0, 1, 2, 2, 1, 3);
+// The window depth of a world plane at a tile texel f, as dot(xy, f) + z: a plane stays a plane
+// through the projection, so its NDC depth is affine in NDC x and y (and so in texels). Where the
+// light's rays run along the plane there is no depth: (0, 0, -1), which no depth test accepts.
+vec3 plane_window_depth(vec4 world_plane) {
+  vec4 clip_plane = transpose(u_inv_view_proj) * world_plane;  // plane . (clip point) = 0
+  if (abs(clip_plane.z) <= 1e-7 * length(clip_plane)) return vec3(0.0, 0.0, -1.0);
+  // ndc z = -(a x + b y + d) / c with ndc x = 2 f / tile - 1; window depth = ndc z / 2 + 1 / 2.
+  vec3 k = -clip_plane.xyw / clip_plane.z;
+  return vec3(k.xy / u_tile_size, 0.5 * (k.z - k.x - k.y) + 0.5);
+}
 
 void main() {
-  uvec2 listed = silhouettes[gl_VertexID / 6];
-  int corner = kCorner[gl_VertexID % 6];
+  // Corner k sits at end a (k < 2) or b, and follows plane p (k even) or q.
+  uvec2 listed = silhouettes[gl_VertexID / 4];
+  int corner = gl_VertexID % 4;
   uint quad = listed.y;
   SilhouetteInstance instance = silhouette_instances[listed.x];
   mat4 model = instance.model;
@@ -83,5 +93,5 @@ void main() {
   v_outward = outward;
   // On a silhouette exactly one plane faces the light; the occluder lies behind it (a convex
   // edge's facets and bevel are supporting planes).
-  v_front_plane = front ? plane : plane_matrix * other_plane;
+  v_front_depth = plane_window_depth(front ? plane : plane_matrix * other_plane);
 }

@@ -21,9 +21,9 @@ struct InstanceRecord {
 };
 static_assert(sizeof(InstanceRecord) == 144);
 
-// glDrawArraysIndirect's command; find() counts six vertices per silhouette into `count`.
+// glDrawElementsIndirect's command; find() counts six indices per silhouette into `count`.
 struct DrawCommand {
-  std::uint32_t count = 0, instance_count = 1, first = 0, base_instance = 0;
+  std::uint32_t count = 0, instance_count = 1, first_index = 0, base_vertex = 0, base_instance = 0;
 };
 
 // One remembered scene, by GpuScene::serial() (an address is reused by the next scene made
@@ -105,8 +105,8 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
     slots += r.quad_count;
     instances.push_back(r);
   }
-  // Every buffer is one storage block: each must fit the largest one the GL allows, and the
-  // finding pass counts instance quads in 32 bits.
+  // Every buffer is one storage block: each must fit the largest one the GL allows; the finding
+  // pass counts six indices per instance quad in 32 bits.
   const size_t largest = static_cast<size_t>(std::max<GLint>(gl_limit(GL_MAX_SHADER_STORAGE_BLOCK_SIZE), 0));
   const size_t quad_bytes = quads.size() * sizeof(SilhouetteQuad), list_bytes = slots * 2 * sizeof(std::uint32_t);
   if (std::max(quad_bytes, list_bytes) > largest || slots > UINT32_MAX / 6)
@@ -122,6 +122,13 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
     out->list_ = gl::Buffer(list_bytes, nullptr, false);
     const DrawCommand empty;
     out->command_ = gl::Buffer(sizeof empty, &empty, true);
+    // List entry i is vertices 4i .. 4i + 3, two triangles (0, 1, 2), (2, 1, 3): indexed, so the
+    // two shared corners are shaded once (four vertex invocations a quad, not six).
+    std::vector<std::uint32_t> indices(slots * 6);
+    constexpr std::uint32_t kCorners[6] = {0, 1, 2, 2, 1, 3};
+    for (size_t i = 0; i < slots; ++i)
+      for (size_t k = 0; k < 6; ++k) indices[6 * i + k] = static_cast<std::uint32_t>(4 * i) + kCorners[k];
+    out->indices_ = gl::Buffer::from<std::uint32_t>(indices);
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     out->vao_ = gl::GlHandle<gl::delete_vertex_array>(vao);
@@ -165,8 +172,9 @@ void SilhouetteBuffers::draw_found(const gl::Program& program) const {
   bind_records();
   glUseProgram(program.id());
   glBindVertexArray(vao_.id());
+  glVertexArrayElementBuffer(vao_.id(), indices_.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
-  glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+  glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
 }

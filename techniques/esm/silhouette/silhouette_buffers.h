@@ -4,8 +4,8 @@
 //  - find(): a compute pass tests every quad of every instance against the light (the light in
 //    front of exactly one of its planes: is_silhouette) and appends the silhouettes to a list,
 //    counting them into an indirect draw command;
-//  - draw_found(): draws six vertices per listed quad, indirectly; the vertex shader builds the
-//    quad's corners from its record. Raster work grows with the silhouettes, not with the mesh.
+//  - draw_found(): draws the listed quads, indirectly, four vertices each through a fixed index
+//    buffer; the vertex shader builds the quad's corners from its record. Raster work grows with the silhouettes, not with the mesh.
 // One storage buffer holds every mesh's quads (SilhouetteQuad records, 68 bytes each), one the
 // instances (world matrix, plane matrix, where the mesh's quads start). Shared by every pass
 // that draws quads: a pass holds the shared_ptr; the cache only remembers it (weak_ptr), so the
@@ -51,7 +51,7 @@ class SilhouetteBuffers {
   // This frame's silhouettes from `light` (homogeneous: (position, 1), or (-direction, 0)) into
   // the list and the draw command. Ends with the barriers the indirect draw needs.
   void find(const gl::Program& find_program, const glm::vec4& light) const;
-  // Draws the quads the last find() listed with `program` (six vertices a quad, indirect).
+  // Draws the quads the last find() listed with `program` (indirect, indexed).
   void draw_found(const gl::Program& program) const;
   // How many quads the last find() listed (a read-back: for tests and statistics only).
   size_t found() const;
@@ -64,7 +64,7 @@ class SilhouetteBuffers {
  private:
   SilhouetteBuffers() = default;
   void bind_records() const;
-  gl::Buffer quads_, instances_, list_, command_;
+  gl::Buffer quads_, instances_, list_, command_, indices_;
   gl::GlHandle<gl::delete_vertex_array> vao_;  // empty: the vertex shader reads the buffers
   SilhouetteStats totals_;
   size_t instance_count_ = 0, instance_quads_ = 0;
