@@ -5,6 +5,8 @@
 // depth, minimal distance"); the depth pass's neutral defaults make one pass enough. blend =
 // overwrite: no blending, r and g replaced by whichever quad comes last: the first pass of the
 // paper's two-pass fallback, for hardware without that blend mode, followed by a max pass.
+#include <string>
+
 #include "exec/gpu_scene.h"
 #include "exec/pass_decl_builder.h"
 #include "gl/framebuffer.h"
@@ -40,7 +42,10 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       if (Status s = fb_.finish(); !s) return s;
       attached_ = esm.id();
     }
-    buffers_->find(find.program(), views->light);  // one light, so one list for every face
+    const std::string& finding = ctx.enumeration("silhouette_finding");
+    const bool find_first =
+        finding == "gpu" || (finding == "auto" && buffers_->instance_quads() > kFindAboveQuads);
+    if (find_first) buffers_->find(find.program(), views->light);  // one light: one list for every face
     const gl::Program& prog = p.program();
     set_view_uniforms(prog, *views);
     prog.set("u_light", views->light);
@@ -62,7 +67,8 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       prog.set("u_inv_view_proj", glm::inverse(f.view_proj));
       prog.set("u_tile_size", static_cast<float>(f.size));
       prog.set("u_tile_origin", glm::vec2(f.origin));
-      buffers_->draw_found(prog);
+      if (find_first) buffers_->draw_found(prog);
+      else buffers_->draw_all(prog);
     }
     glDisable(GL_SCISSOR_TEST);
     glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -89,6 +95,11 @@ exec::PassType silhouette_quad_pass_type() {
       .enumeration("blend", "max", {"max", "overwrite"},
                    "max: MAX blending (one pass); overwrite: the two-pass fallback's first pass")
       .required()
+      .enumeration("silhouette_finding", "auto", {"auto", "gpu", "all"},
+                   "gpu: a compute pass lists the quads that are silhouettes from the light, and only those are drawn; "
+                   "all: every quad is drawn and those that are none collapse in the vertex shader (the paper); "
+                   "auto: gpu above " + std::to_string(kFindAboveQuads) +
+                       " quads over all instances, where it pays. The map is the same")
       .real("hidden_edge_tolerance", 2.0, 0.0, 1000.0, "texels",
             "Hidden edges: an edge writes no texel whose surface is nearer the light than the edge (outside its "
             "occluder) or than its lit facet's plane (inside) by more than this many texel footprints");

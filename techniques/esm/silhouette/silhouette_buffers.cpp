@@ -93,6 +93,7 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
     quads.insert(quads.end(), g.quads.begin(), g.quads.end());
   }
   std::vector<InstanceRecord> instances;
+  std::vector<std::uint32_t> all;  // (instance, quad) pairs, in slot order
   size_t slots = 0;
   for (const scene::Instance& inst : s.instances) {
     if (inst.mesh >= geometry->size() || (*geometry)[inst.mesh].quads.empty()) continue;
@@ -103,6 +104,8 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
     r.quad_count = static_cast<std::uint32_t>((*geometry)[inst.mesh].quads.size());
     r.first_slot = static_cast<std::uint32_t>(slots);
     slots += r.quad_count;
+    for (std::uint32_t q = 0; q < r.quad_count; ++q)
+      all.insert(all.end(), {static_cast<std::uint32_t>(instances.size()), r.first_quad + q});
     instances.push_back(r);
   }
   // Every buffer is one storage block: each must fit the largest one the GL allows; the finding
@@ -129,6 +132,10 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
     for (size_t i = 0; i < slots; ++i)
       for (size_t k = 0; k < 6; ++k) indices[6 * i + k] = static_cast<std::uint32_t>(4 * i) + kCorners[k];
     out->indices_ = gl::Buffer::from<std::uint32_t>(indices);
+    out->all_list_ = gl::Buffer::from<std::uint32_t>(all);
+    DrawCommand every;
+    every.count = static_cast<std::uint32_t>(6 * slots);
+    out->all_command_ = gl::Buffer(sizeof every, &every, false);
     GLuint vao = 0;
     glCreateVertexArrays(1, &vao);
     out->vao_ = gl::GlHandle<gl::delete_vertex_array>(vao);
@@ -143,17 +150,17 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
   return out;
 }
 
-void SilhouetteBuffers::bind_records() const {
+void SilhouetteBuffers::bind_records(const gl::Buffer& list) const {
   quads_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::quads);
   instances_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::instances);
-  list_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::list);
+  list.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::list);
 }
 
 void SilhouetteBuffers::find(const gl::Program& program, const glm::vec4& light) const {
   if (instance_quads_ == 0) return;
   const DrawCommand empty;
   glNamedBufferSubData(command_.id(), 0, sizeof empty, &empty);
-  bind_records();
+  bind_records(list_);
   command_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::command);
   program.set("u_light", light);
   program.set("u_instance_count", static_cast<int>(instance_count_));
@@ -167,13 +174,17 @@ void SilhouetteBuffers::find(const gl::Program& program, const glm::vec4& light)
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
-void SilhouetteBuffers::draw_found(const gl::Program& program) const {
+void SilhouetteBuffers::draw_found(const gl::Program& program) const { draw(program, list_, command_); }
+
+void SilhouetteBuffers::draw_all(const gl::Program& program) const { draw(program, all_list_, all_command_); }
+
+void SilhouetteBuffers::draw(const gl::Program& program, const gl::Buffer& list, const gl::Buffer& command) const {
   if (instance_quads_ == 0) return;
-  bind_records();
+  bind_records(list);
   glUseProgram(program.id());
   glBindVertexArray(vao_.id());
   glVertexArrayElementBuffer(vao_.id(), indices_.id());
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command.id());
   glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);

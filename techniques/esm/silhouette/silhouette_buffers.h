@@ -5,7 +5,10 @@
 //    front of exactly one of its planes: is_silhouette) and appends the silhouettes to a list,
 //    counting them into an indirect draw command;
 //  - draw_found(): draws the listed quads, indirectly, four vertices each through a fixed index
-//    buffer; the vertex shader builds the quad's corners from its record. Raster work grows with the silhouettes, not with the mesh.
+//    buffer; the vertex shader builds the quad's corners from its record.
+// Or, the paper's way, draw_all(): every quad of every instance, and the vertex shader collapses
+// those that are no silhouette (Figure 4). On small scenes that is cheaper than a dispatch and a
+// barrier (kFindAboveQuads). Raster work grows with the silhouettes, not with the mesh.
 // One storage buffer holds every mesh's quads (SilhouetteQuad records, 68 bytes each), one the
 // instances (world matrix, plane matrix, where the mesh's quads start). Shared by every pass
 // that draws quads: a pass holds the shared_ptr; the cache only remembers it (weak_ptr), so the
@@ -40,6 +43,13 @@ std::vector<std::pair<std::string, std::string>> silhouette_shader_defines();
 // Work-group size of the finding pass (its local_size_x, passed as a define as well).
 inline constexpr unsigned kFindGroupSize = 256;
 
+// Above this many quads over all instances, finding the silhouettes first pays. Measured on an
+// H100 (1080p, 512^2 map; docs/results/esm.md): the finding pass costs a dispatch and a barrier,
+// about 0.014 ms, whatever the scene; drawing every quad costs about 7 ns a quad. Colonnade, 2,652
+// quads: 0.038 ms drawing all, 0.046 ms finding; showcase, 5,589: 0.051 / 0.050; FlightHelmet,
+// 87,257: 0.631 / 0.165.
+inline constexpr size_t kFindAboveQuads = 4096;
+
 class SilhouetteBuffers {
  public:
   // The buffers of `scene`, built on first use (and again when a different scene is set).
@@ -53,6 +63,8 @@ class SilhouetteBuffers {
   void find(const gl::Program& find_program, const glm::vec4& light) const;
   // Draws the quads the last find() listed with `program` (indirect, indexed).
   void draw_found(const gl::Program& program) const;
+  // Draws every quad with `program`; those that are no silhouette collapse in the vertex shader.
+  void draw_all(const gl::Program& program) const;
   // How many quads the last find() listed (a read-back: for tests and statistics only).
   size_t found() const;
 
@@ -63,8 +75,10 @@ class SilhouetteBuffers {
 
  private:
   SilhouetteBuffers() = default;
-  void bind_records() const;
+  void bind_records(const gl::Buffer& list) const;
+  void draw(const gl::Program& program, const gl::Buffer& list, const gl::Buffer& command) const;
   gl::Buffer quads_, instances_, list_, command_, indices_;
+  gl::Buffer all_list_, all_command_;  // every (instance, quad), and the command that draws them
   gl::GlHandle<gl::delete_vertex_array> vao_;  // empty: the vertex shader reads the buffers
   SilhouetteStats totals_;
   size_t instance_count_ = 0, instance_quads_ = 0;
