@@ -44,11 +44,11 @@ std::vector<std::pair<std::string, std::string>> silhouette_shader_defines();
 inline constexpr unsigned kFindGroupSize = 256;
 
 // Above this many quads over all instances, finding the silhouettes first pays. Measured on an
-// H100 (1080p, 512^2 map; docs/results/esm.md): the finding pass costs a dispatch and a barrier,
-// about 0.014 ms, whatever the scene; drawing every quad costs about 7 ns a quad. Colonnade, 2,652
-// quads: 0.038 ms drawing all, 0.046 ms finding; showcase, 5,589: 0.051 / 0.050; FlightHelmet,
-// 87,257: 0.631 / 0.165.
-inline constexpr size_t kFindAboveQuads = 4096;
+// H100 (1080p, 512^2 map; docs/results/esm.md), silhouette pass in ms, drawing every quad / finding
+// first: colonnade (2,652 quads) 0.034 / 0.047, showcase (5,589) 0.043 / 0.050, FlightHelmet
+// (87,257) 0.310 / 0.165. The finding pass costs a dispatch and a barrier whatever the scene;
+// drawing every quad costs about 3 ns a quad more than drawing the silhouettes.
+inline constexpr size_t kFindAboveQuads = 8192;
 
 class SilhouetteBuffers {
  public:
