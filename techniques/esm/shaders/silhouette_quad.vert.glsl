@@ -26,6 +26,11 @@ flat out vec2 v_depth;         // their window depths
 flat out vec2 v_outward;       // unit, texel space, across the edge away from the occluder
 flat out vec3 v_front_depth;   // window depth of the plane facing the light: dot(xy, tile texel) + z
 
+// Texels beyond the band the quad still covers, so that rounding in its corners never loses a
+// texel centre of the band. Every extra texel is a fragment the fragment shader discards: a
+// margin of half a texel made about a quarter of a short edge's fragments (FlightHelmet at 512^2).
+const float QUAD_MARGIN = 0.05;
+
 // Collapses the vertex (no area, nothing rasterised).
 void collapse() {
   gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
@@ -77,14 +82,14 @@ void main() {
   vec2 toward = e.xy * c0.w - c0.xy * e.w;
   vec2 normal = vec2(-along.y, along.x);
   vec2 outward = dot(toward, normal) >= 0.0 ? normal : -normal;
-  // Figure 4: in front of this vertex's plane -> outwards, behind -> inwards; half a texel of
+  // Figure 4: in front of this vertex's plane -> outwards, behind -> inwards; QUAD_MARGIN of
   // margin beyond the band (the fragment shader cuts the band exactly). Beyond its ends the quad
   // reaches BAND_OUT further along the edge, for the outside of convex corners (see the
   // fragment shader).
   vec4 plane = plane_matrix * followed_plane;
   bool front = dot(plane, u_light) > 0.0;
-  vec2 offset = front ? outward * (BAND_OUT + 0.5) : -outward * (BAND_IN + 0.5);
-  offset -= along * (BAND_OUT + 0.5);  // this end is p0: extend away from p1
+  vec2 offset = front ? outward * (BAND_OUT + QUAD_MARGIN) : -outward * (BAND_IN + QUAD_MARGIN);
+  offset -= along * (BAND_OUT + QUAD_MARGIN);  // this end is p0: extend away from p1
   vec4 c = c0;
   gl_Position = vec4((((p0 + offset) / u_tile_size) * 2.0 - 1.0) * c.w, c.z, c.w);
   v_end0 = p0;
