@@ -45,8 +45,8 @@ inline constexpr unsigned kFindGroupSize = 256;
 
 // Above this many quads over all instances, finding the silhouettes first pays. Measured on an
 // H100 (1080p, 512^2 map; docs/results/esm.md), silhouette pass in ms, drawing every quad / finding
-// first: colonnade (2,652 quads) 0.034 / 0.047, showcase (5,589) 0.043 / 0.050, FlightHelmet
-// (87,257) 0.310 / 0.165. The finding pass costs a dispatch and a barrier whatever the scene;
+// first: colonnade (2,652 quads) 0.033 / 0.046, showcase (5,589) 0.041 / 0.050, FlightHelmet
+// (87,257) 0.296 / 0.152. The finding pass costs a dispatch and a barrier whatever the scene;
 // drawing every quad costs about 3 ns a quad more than drawing the silhouettes.
 inline constexpr size_t kFindAboveQuads = 8192;
 
