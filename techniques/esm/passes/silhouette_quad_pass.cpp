@@ -1,6 +1,7 @@
-// esm_silhouette_quads: this frame's silhouette quads, found in a compute pass over every quad
-// of every mesh instance, then drawn face by face into the extended shadow map (Bujnak,
-// section 4.1). blend = max: MAX blending, so where quads overlap
+// esm_silhouette_quads: this frame's silhouette quads drawn face by face into the extended
+// shadow map (Bujnak, section 4.1): found first in a compute pass over every quad of every mesh
+// instance, or, on small scenes, every quad drawn and collapsed in the vertex shader where it is
+// no silhouette (silhouette_finding; the same map either way). blend = max: MAX blending, so where quads overlap
 // the map keeps the farthest edge depth and the most shadowed edge value (the paper's "maximal
 // depth, minimal distance"); the depth pass's neutral defaults make one pass enough. blend =
 // overwrite: no blending, r and g replaced by whichever quad comes last: the first pass of the
