@@ -100,6 +100,11 @@ TEST(EsmModes, FindingSilhouettesFirstWritesTheSameMapAsDrawingEveryQuad) {
     size_t marked = 0;
     for (float m : all_marks.pixels) marked += m > 0.5f ? 1 : 0;
     EXPECT_GT(marked, 0u) << name << ": no silhouette to compare";
+    // The paper's two-pass fallback finds the silhouettes for each of its passes.
+    rig.set({"silhouette_finding=gpu", "overlap_resolve=two_pass"});
+    rig.render();
+    EXPECT_EQ(max_difference(rig.read("esm_silhouette_mask"), all_marks), 0.0f) << name << ", two passes";
+    EXPECT_LT(max_difference(rig.shadow_mask(), all_shadow), 1e-3f) << name << ", two passes";
   }
 }
 
