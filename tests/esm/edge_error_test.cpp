@@ -34,23 +34,35 @@ double edge_error_of(test::TechniqueRig& rig, const std::string& technique, int 
   return e ? e->error : 1.0;
 }
 
+// A built-in scene under a point-sized light, its frame's G-buffer and the exact hard shadow.
+struct ExactEdges {
+  explicit ExactEdges(const std::string& name) : rig(kWidth, kHeight, 512) {
+    scene::Scene s = *scene::make_builtin_scene(name);
+    s.light.size = 0.0f;
+    rig.set_scene(s);
+    rig.use("hard");
+    rig.render();  // the G-buffer every technique shares
+    reference = test::exact_hard_reference(rig, s);
+    coverage = rig.coverage();
+  }
+  double error_of(const std::string& technique, int shadow_size) {
+    return edge_error_of(rig, technique, shadow_size, reference, coverage);
+  }
+  test::EsmRig rig;
+  metrics::MaskImage reference;
+  metrics::CoverageMask coverage;
+};
+
 void check_scene(const std::string& name) {
-  scene::Scene s = *scene::make_builtin_scene(name);
-  s.light.size = 0.0f;
-  test::EsmRig rig(kWidth, kHeight, 512);
-  rig.set_scene(s);
-  rig.use("hard");
-  rig.render();  // the G-buffer every technique shares
-  const metrics::MaskImage reference = test::exact_hard_reference(rig, s);
-  const metrics::CoverageMask coverage = rig.coverage();
+  ExactEdges edges(name);
   double esm_512 = 0.0;
   for (int size : {256, 512, 1024}) {
-    const double esm = edge_error_of(rig, "esm", size, reference, coverage);
-    const double hard = edge_error_of(rig, "hard", size, reference, coverage);
+    const double esm = edges.error_of("esm", size);
+    const double hard = edges.error_of("hard", size);
     EXPECT_LT(esm, 0.9 * hard) << name << " at " << size << "^2";
     if (size == 512) esm_512 = esm;
   }
-  const double hard_2048 = edge_error_of(rig, "hard", 2048, reference, coverage);
+  const double hard_2048 = edges.error_of("hard", 2048);
   EXPECT_LE(esm_512, hard_2048) << name << ": esm at 512^2 against hard at 2048^2";
 }
 
@@ -68,17 +80,10 @@ void check_scene(const std::string& name) {
 class EsmNeverWorseThanPlain : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(EsmNeverWorseThanPlain, OfTheSameSizeAt256And512) {
-  scene::Scene s = *scene::make_builtin_scene(GetParam());
-  s.light.size = 0.0f;
-  test::EsmRig rig(kWidth, kHeight, 512);
-  rig.set_scene(s);
-  rig.use("hard");
-  rig.render();
-  const metrics::MaskImage reference = test::exact_hard_reference(rig, s);
-  const metrics::CoverageMask coverage = rig.coverage();
+  ExactEdges edges(GetParam());
   for (int size : {256, 512}) {
-    const double esm = edge_error_of(rig, "esm", size, reference, coverage);
-    const double plain = edge_error_of(rig, "hard", size, reference, coverage);
+    const double esm = edges.error_of("esm", size);
+    const double plain = edges.error_of("hard", size);
     EXPECT_LE(esm, plain) << GetParam() << " at " << size << "^2";
   }
 }
