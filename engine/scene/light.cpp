@@ -59,7 +59,7 @@ namespace {
 
 // A point light outside `bounds`: a square perspective frustum from the light towards the
 // bounds' centre, just wide enough for every corner. Inside (or too close for
-// kMaxPointFrustumHalfAngleDeg) no single frustum sees the scene: `unsupported` says why.
+// kMaxPointFrustumHalfAngleDeg) no single frustum sees the scene: `six_faces`.
 ShadowFrustum point_frustum(const Light& light, const Bounds& bounds) {
   ShadowFrustum f;
   f.orthographic = false;
@@ -67,8 +67,7 @@ ShadowFrustum point_frustum(const Light& light, const Bounds& bounds) {
   const bool inside = glm::all(glm::greaterThanEqual(p, bounds.min)) && glm::all(glm::lessThanEqual(p, bounds.max));
   const glm::vec3 to_centre = bounds.center() - p;
   if (inside || glm::length(to_centre) < 1e-6f) {
-    f.unsupported = "a point light inside the scene bounds needs a shadow map in every direction; "
-                    "this technique renders one frustum (use 'esm', which renders six faces, or move the light outside the bounds)";
+    f.six_faces = true;
     return f;
   }
   const glm::vec3 dir = glm::normalize(to_centre);
@@ -88,9 +87,7 @@ ShadowFrustum point_frustum(const Light& light, const Bounds& bounds) {
   }
   const float max_tan = std::tan(glm::radians(kMaxPointFrustumHalfAngleDeg));
   if (tan_max > max_tan) {
-    f.unsupported = "the point light is so close to the scene bounds that one frustum would need more than " +
-                    std::to_string(static_cast<int>(kMaxPointFrustumHalfAngleDeg)) +
-                    " degrees half-angle; use 'esm' (six faces) or move the light further out";
+    f.six_faces = true;
     return f;
   }
   const float pad = 0.01f * (depth_max - depth_min) + 1e-4f;

@@ -15,8 +15,8 @@
 //  - spot: the disk sits at `position` and faces `direction`; the cone half-angle is spot_angle.
 //  - point: light in every direction from `position`; its emitter is a sphere of diameter
 //    `size`, which every receiver sees as the disk through `position` facing it. `direction`
-//    only orients the single frustum that one-map techniques fit to the scene (see
-//    shadow_frustum); ESM renders six faces instead (techniques/esm).
+//    is not used: outside the scene bounds one frustum is fitted to the scene (shadow_frustum),
+//    inside them the shadow map holds six faces (scene/light_faces.h).
 //
 //   Light l = directional_light_for(bounds, glm::normalize(glm::vec3(-1, -2, -1)), 0.05f);
 //   ShadowFrustum f = shadow_frustum(l, bounds);     // for the shadow-map pass
@@ -77,10 +77,10 @@ struct ShadowFrustum {
   // Perspective only: tan of the half field of view (square frustum); the frustum is
   // 2 * tan_half_fov wide at distance 1. 0 for directional lights.
   float tan_half_fov = 0.0f;
-  // Empty when one frustum covers the scene. Otherwise why it cannot: a point light inside
-  // the scene bounds (or so close that the frustum would need more than kMaxPointFrustumHalfAngleDeg),
-  // which a single shadow map cannot see; passes that need this frustum return this as an Error.
-  std::string unsupported;
+  // A point light that no single frustum can hold (inside the scene bounds, or so close that the
+  // frustum would need more than kMaxPointFrustumHalfAngleDeg): the shadow map holds its six
+  // faces instead (scene/light_faces.h), and view/proj/view_proj are not used.
+  bool six_faces = false;
 };
 
 // Widest half-angle of the frustum fitted to the scene for a point light outside the bounds.
@@ -91,7 +91,7 @@ inline constexpr float kMaxPointFrustumHalfAngleDeg = 80.0f;
 // to the bounds' distance along `direction` (near >= 1e-3 x far). point: when the light is
 // outside the bounds, a spot frustum from `position` towards the bounds' centre whose square
 // field of view just contains the bounds' corners (the light's `direction` is not used);
-// inside them (or with a half-angle above kMaxPointFrustumHalfAngleDeg), `unsupported` says so.
+// inside them (or with a half-angle above kMaxPointFrustumHalfAngleDeg), `six_faces`.
 ShadowFrustum shadow_frustum(const Light& light, const Bounds& bounds);
 
 // Orthonormal basis (tangent, bitangent) of the emitter plane; deterministic for a direction so

@@ -24,7 +24,7 @@ class MaskPass final : public penumbra::exec::PassImpl {
     ctx.bind_sampled(p, "u_moments", "moments", bilinear_.id());  // the paper filters bilinearly too
     if (contact_hardening) ctx.bind_sampled(p, "u_moments_wide", "moments_wide", bilinear_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
-    penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame());
+    if (Status s = penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame()); !s) return s;
     p.program().set("u_to_canonical", kToCanonical);
     p.program().set("u_optimised_offset", kOptimisedOffset);
     p.program().set("u_moment_bias", ctx.real("moment_bias"));

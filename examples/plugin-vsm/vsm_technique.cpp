@@ -18,7 +18,7 @@ class MomentsPass final : public penumbra::exec::PassImpl {
     if (!p.valid()) return *p.last_error();
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     ctx.bind_image(0, "moments", GL_WRITE_ONLY);
-    penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame());
+    if (penumbra::Status s = penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame()); !s) return s;
     p.program().set("u_radius", static_cast<int>(ctx.integer("blur_radius")));
     ctx.dispatch_over(p, ctx.texture("moments"));
     return {};
@@ -33,7 +33,7 @@ class MaskPass final : public penumbra::exec::PassImpl {
     ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_moments", "moments");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
-    penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame());
+    if (penumbra::Status s = penumbra::passes::set_shadow_uniforms(p.program(), ctx.frame()); !s) return s;
     p.program().set("u_min_variance", ctx.real("min_variance"));
     p.program().set("u_bleeding", ctx.real("light_bleeding"));
     ctx.dispatch_over(p, ctx.texture("mask"));

@@ -82,8 +82,17 @@ int receiver_at(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r
 }
 
 // The receiver plane of a receiver (only where taps will be taken: it reads the neighbours' depths).
+// Six faces need none: shadow_tap() meets the receiver's tangent plane along each tap's ray.
 void add_receiver_plane(sampler2D depths, ivec2 pixel, inout Receiver r) {
+  if (u_light_faces != 1) return;
   r.dz_duv = receiver_depth_gradient(depths, pixel, r.world, r.normal, r.coord);
+}
+
+// The receiver's distance from the light (world units) in the sense of light_distance(): along
+// the one view's axis, or for six faces along the ray from the light, the axis of the view
+// centred on the receiver that shadow_tap() places its taps in.
+float receiver_light_distance(Receiver r) {
+  return u_light_faces == 1 ? light_distance(r.coord.z) : length(r.world - u_light_pos);
 }
 
 // Any receiver inside the shadow-map frustum, facing the light or not, with its plane; false for
@@ -103,3 +112,49 @@ float receiver_depth_at(Receiver r, vec2 offset_uv, float bias) {
   return r.coord.z + dot(offset_uv, r.dz_duv) - (abs(r.dz_duv.x) + abs(r.dz_duv.y)) * u_shadow_texel - bias;
 }
 
+
+// Where a filter tap reads the map, and what it compares there.
+struct ShadowTap {
+  vec2 uv;              // map UV
+  float ref;            // receiver depth at the tap, bias subtracted: a texel below it is a blocker
+  float distance_scale; // light_distance() of a depth read here x this = the receiver_light_distance() scale
+};
+
+// The tap `offset_uv` from the receiver, in shadow-map UV. One view: r.coord.xy + offset_uv,
+// against the receiver plane (receiver_depth_at). Six faces: offsets are UV of a face-sized view
+// centred on the receiver's direction w0 from the light, so the tap is the direction
+// w = normalize(w0 + (offset.x t + offset.y b) u_light_frustum_width) (t, b: w0's basis), read in
+// the face w belongs to: a kernel that crosses a face edge goes on in the next face, no seam. It is
+// compared with the depth, in that face, of the point where the ray along w meets the receiver's
+// tangent plane (the receiver-plane bias of Isidoro 2006 in exact form), less the plane's depth
+// change over one texel (his fractional-texel term) and `bias`.
+const float kMaxFractionalTexel = 0.05;
+ShadowTap shadow_tap(Receiver r, vec2 offset_uv, float bias) {
+  ShadowTap t;
+  if (u_light_faces == 1) {
+    t.uv = r.coord.xy + offset_uv;
+    t.ref = receiver_depth_at(r, offset_uv, bias);
+    t.distance_scale = 1.0;
+    return t;
+  }
+  vec3 to = r.world - u_light_pos;
+  float d = max(length(to), 1e-6);
+  vec3 w0 = to / d, tx, ty;
+  direction_basis(w0, tx, ty);
+  vec3 w = normalize(w0 + (tx * offset_uv.x + ty * offset_uv.y) * u_light_frustum_width);
+  float nw = dot(r.normal, w);  // negative: the receiver faces the light
+  // The plane's distance along w, within [d / 2, 2 d]: a grazing receiver's plane passes near the
+  // light, and unbounded it would lift taps over casters between (like the one-view gradient cap).
+  float along = nw < -1e-3 ? clamp(dot(r.normal, to) / nw, 0.5 * d, 2.0 * d) : d;
+  // At grazing incidence the plane's change over a texel grows without bound; past 5 % of the
+  // distance it would lift the receiver over casters near it (a light inside a shell).
+  float tan_incidence = sqrt(max(1.0 - nw * nw, 0.0)) / max(-nw, 1e-3);
+  along -= along * min(tan_incidence * u_shadow_texel * u_light_frustum_width, kMaxFractionalTexel);
+  int face = light_face(w);
+  vec3 c = face_shadow_coord(face, u_light_pos + w * along);
+  t.uv = c.xy;
+  t.ref = c.z - bias;
+  vec3 a = abs(w);
+  t.distance_scale = 1.0 / max(max(a.x, a.y), a.z);
+  return t;
+}

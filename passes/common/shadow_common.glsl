@@ -1,5 +1,15 @@
 // Light-space helpers shared by every pass that reads a shadow map. The C++ side sets these
 // uniforms with set_shadow_uniforms() (passes/common/shadow_uniforms.h).
+//
+// The map holds one view of the light (u_light_faces = 1: directional, spot, a point light
+// outside the scene) or the six faces of a point light inside the scene (u_light_faces = 6,
+// scene/light_faces.h), each a tile of the map seen through its own perspective frustum; then
+// near/far are every face's planes (a depth is the distance along the face's axis),
+// u_light_frustum_width is a face's and u_shadow_texel one texel of a face in face UV.
+#include "light_faces.glsl"
+uniform int u_light_faces;        // 1 or 6
+uniform mat4 u_light_face_view_proj[6];  // six faces: world -> clip of each face
+uniform vec4 u_light_face_rect[6];       // six faces: tile origin (xy) and side (z), map UV
 uniform mat4 u_light_view_proj;   // world -> light clip space
 uniform mat4 u_light_view;        // world -> light view space (looking down -Z)
 uniform float u_light_near;       // world units from the emitter plane / light position
@@ -17,19 +27,38 @@ uniform float u_light_emitter_distance; // directional: emitter plane to scene c
 uniform float u_blocker_height_scale; // the scene's height along the light's rays, world units
                                       // (scene::blocker_height_scale; 1 without a scene)
 
-// (shadow-map uv in [0,1], window depth in [0,1]) of a world position.
+// (map uv, window depth) of a world position seen through face `face` of six; outside [0, 1]
+// at the light itself.
+vec3 face_shadow_coord(int face, vec3 world) {
+  vec4 clip = u_light_face_view_proj[face] * vec4(world, 1.0);
+  if (clip.w <= 0.0) return vec3(-1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  vec4 rect = u_light_face_rect[face];
+  return vec3(rect.xy + (ndc.xy * 0.5 + 0.5) * rect.z, ndc.z * 0.5 + 0.5);
+}
+
+// (shadow-map uv in [0,1], window depth in [0,1]) of a world position: six faces, through the
+// face of its direction from the light.
 vec3 shadow_coord(vec3 world) {
+  if (u_light_faces == 6) return face_shadow_coord(light_face(world - u_light_pos), world);
   vec4 clip = u_light_view_proj * vec4(world, 1.0);
   vec3 ndc = clip.xyz / clip.w;
   return ndc * 0.5 + 0.5;
 }
 
 // World-unit distance from the light (emitter plane for directional, light position along the
-// axis for spot) of a window depth read from the shadow map.
+// axis for spot and for each of six faces) of a window depth read from the shadow map.
 float light_distance(float window_depth) {
   float z = window_depth * 2.0 - 1.0;
   if (u_light_ortho == 1) return u_light_near + window_depth * (u_light_far - u_light_near);
   return 2.0 * u_light_near * u_light_far / (u_light_far + u_light_near - z * (u_light_far - u_light_near));
+}
+
+// A unit direction's tangent basis: the same as scene::emitter_basis (scene/light.cpp).
+void direction_basis(vec3 d, out vec3 tangent, out vec3 bitangent) {
+  vec3 helper = abs(d.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  tangent = normalize(cross(helper, d));
+  bitangent = cross(d, tangent);
 }
 
 // Light size expressed in shadow-map UV at light distance `d` (world units). For an ortho map

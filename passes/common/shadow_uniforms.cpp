@@ -1,29 +1,72 @@
 #include "passes/common/shadow_uniforms.h"
 
 #include <algorithm>
-
 #include <cmath>
+#include <string>
 
 #include "exec/gpu_scene.h"
+#include "scene/light_faces.h"
 
 namespace penumbra::passes {
+namespace {
 
-void set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
+const char* kSixFaceTechniques = "hard, pcf, pcss and esm";
+
+scene::Bounds frame_bounds(const exec::FrameInputs& frame) {
+  return frame.scene ? frame.scene->cpu().bounds : scene::Bounds{};
+}
+
+// The six faces of the frame's map: shadow_common.glsl's u_light_face_* (tile rectangles in map UV).
+Status set_face_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
+  Result<scene::PointLightFaces> faces = scene::point_light_faces(frame.light, frame_bounds(frame), frame.shadow_size);
+  if (!faces) return faces.error();
+  const float map = static_cast<float>(frame.shadow_size);
+  for (int i = 0; i < 6; ++i) {
+    // (Appending, not "[" + to_string(i): GCC 12 warns falsely (-Wrestrict) on that form.)
+    std::string matrix = "u_light_face_view_proj[", rect = "u_light_face_rect[";
+    matrix.append(std::to_string(i)).append("]");
+    rect.append(std::to_string(i)).append("]");
+    const scene::LightFace& f = faces->faces[i];
+    p.set(matrix.c_str(), f.view_proj);
+    p.set(rect.c_str(), glm::vec4(glm::vec2(f.origin) / map, static_cast<float>(f.size) / map, 0.0f));
+  }
+  p.set("u_light_faces", 6);
+  p.set("u_light_near", faces->near_plane);
+  p.set("u_light_far", faces->far_plane);
+  p.set("u_light_ortho", 0);
+  p.set("u_light_frustum_width", 2.0f * faces->tan_half_fov);
+  p.set("u_shadow_texel", 1.0f / static_cast<float>(faces->tile));
+  return {};
+}
+
+}  // namespace
+
+Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame, SixFaces six_faces) {
   const scene::ShadowFrustum& s = frame.shadow;
+  p.set("u_light_size_world", frame.light.size);
+  p.set("u_light_dir", frame.light.direction);
+  p.set("u_light_pos", frame.light.position);
+  const scene::Bounds bounds = frame_bounds(frame);
+  p.set("u_light_emitter_distance", frame.scene ? scene::emitter_distance(frame.light, bounds) : 1.0f);
+  p.set("u_blocker_height_scale", frame.scene ? scene::blocker_height_scale(frame.light, bounds) : 1.0f);
+  if (s.six_faces) {
+    if (six_faces == SixFaces::refused)
+      return make_error(std::string("a point light inside the scene bounds needs a shadow map in every direction, "
+                                    "which this pass does not read (techniques that do: ") +
+                            kSixFaceTechniques + "; or move the light outside the bounds)",
+                        ErrorKind::bad_input);
+    return set_face_uniforms(p, frame);
+  }
+  p.set("u_light_faces", 1);
   p.set("u_light_view_proj", s.view_proj);
   p.set("u_light_view", s.view);
   p.set("u_light_near", s.near_plane);
   p.set("u_light_far", s.far_plane);
   p.set("u_light_ortho", s.orthographic ? 1 : 0);
-  p.set("u_light_size_world", frame.light.size);
-  float width = s.orthographic ? s.width_world : 2.0f * s.tan_half_fov;
+  const float width = s.orthographic ? s.width_world : 2.0f * s.tan_half_fov;
   p.set("u_light_frustum_width", width);
-  p.set("u_light_dir", frame.light.direction);
-  p.set("u_light_pos", frame.light.position);
   p.set("u_shadow_texel", 1.0f / static_cast<float>(std::max(frame.shadow_size, 1)));
-  p.set("u_light_emitter_distance",
-        frame.scene ? scene::emitter_distance(frame.light, frame.scene->cpu().bounds) : 1.0f);
-  p.set("u_blocker_height_scale", frame.scene ? scene::blocker_height_scale(frame.light, frame.scene->cpu().bounds) : 1.0f);
+  return {};
 }
 
 }  // namespace penumbra::passes

@@ -2,10 +2,20 @@
 // Sets the uniforms declared in passes/common/shadow_common.glsl from the frame's light.
 #include "exec/frame_inputs.h"
 #include "gl/program.h"
+#include "util/error.h"
 
 namespace penumbra::passes {
 
-void set_shadow_uniforms(const gl::Program& program, const exec::FrameInputs& frame);
+// Whether a pass reads the six-face map of a point light inside the scene (scene/light_faces.h):
+// its shader places every tap with shadow_common.glsl's shadow_tap() / shadow_coord(), which
+// pick the face by direction. A pass whose shader offsets shadow-map UV itself `refuses` them.
+enum class SixFaces { refused, read };
+
+// For a frame whose light needs six faces (frame.shadow.six_faces), a pass that refuses them
+// gets a bad-input Error naming the techniques that shadow such a light (the executor adds the
+// pass's name).
+[[nodiscard]] Status set_shadow_uniforms(const gl::Program& program, const exec::FrameInputs& frame,
+                                         SixFaces six_faces = SixFaces::refused);
 
 // The shadow-map window depth bias units as documented for the shadow_map pass.
 struct ShadowBias {

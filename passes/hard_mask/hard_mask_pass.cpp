@@ -22,7 +22,7 @@ class HardMaskPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
-    set_shadow_uniforms(p.program(), ctx.frame());
+    if (Status s = set_shadow_uniforms(p.program(), ctx.frame(), SixFaces::read); !s) return s;
     p.program().set("u_depth_bias", ctx.real("depth_bias"));
     gl::Texture& mask = ctx.texture("mask");
     ctx.dispatch_over(p, mask.width(), mask.height());

@@ -9,7 +9,8 @@
 //   PCF_KERNEL_VOGEL `samples` taps on a Vogel disk of `radius` texels, rotated per pixel by
 //                    phi = 2 pi IGN(pixel) (Sterna 2018, section 1) so banding becomes noise.
 // Each tap is a bilinear hardware comparison against the receiver plane (Isidoro
-// 2006) minus a small constant bias.
+// 2006) minus a small constant bias. A point light's six faces (shadow_common.glsl) place every
+// tap by direction (shadow_tap), the box kernel included.
 #include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
@@ -35,26 +36,35 @@ void main() {
     vec2 size = vec2(textureSize(u_shadow_map, 0));
     float sum = 0.0;
 #if PCF_KERNEL_BOX
-    int h = u_box_size / 2;
-    float total = 0.0;
-    vec2 t = r.coord.xy * size - 0.5;  // texel space, texel centres at integers
-    vec2 base = floor(t);
-    vec2 f = t - base;                 // the bilinear fraction every tap shares
-    for (int by = -h; by <= h; by += 2) {
-      vec2 wy = vec2(by == h ? f.y : 1.0, by == -h ? 1.0 - f.y : 1.0);  // rows by + 1, by
-      for (int bx = -h; bx <= h; bx += 2) {
-        vec2 wx = vec2(bx == -h ? 1.0 - f.x : 1.0, bx == h ? f.x : 1.0);  // columns bx, bx + 1
-        vec2 corner = (base + vec2(bx, by) + 1.0) / size;  // between the block's 4 texel centres
-        // textureGather order: (bx, by+1), (bx+1, by+1), (bx+1, by), (bx, by)
-        vec4 passed = textureGather(u_shadow_map, corner, receiver_depth_at(r, corner - r.coord.xy, u_depth_bias));
-        vec4 w = vec4(wx.x * wy.x, wx.y * wy.x, wx.y * wy.y, wx.x * wy.y);
-        sum += dot(passed, w);
-        total += dot(vec4(1.0), w);  // N^2 up to rounding; the same sum when every texel passes
+    if (u_light_faces != 1) {
+      // Six faces: the same N x N bilinear taps one (face) texel apart, each placed by its own
+      // direction (shadow_tap), since a gather's 2 x 2 block may straddle two faces' tiles.
+      int h = u_box_size / 2;
+      for (int y = -h; y <= h; ++y)
+        for (int x = -h; x <= h; ++x) sum += pcf_tap(u_shadow_map, r, vec2(x, y) * u_shadow_texel, u_depth_bias);
+      lit = sum / float(u_box_size * u_box_size);
+    } else {
+      int h = u_box_size / 2;
+      float total = 0.0;
+      vec2 t = r.coord.xy * size - 0.5;  // texel space, texel centres at integers
+      vec2 base = floor(t);
+      vec2 f = t - base;                 // the bilinear fraction every tap shares
+      for (int by = -h; by <= h; by += 2) {
+        vec2 wy = vec2(by == h ? f.y : 1.0, by == -h ? 1.0 - f.y : 1.0);  // rows by + 1, by
+        for (int bx = -h; bx <= h; bx += 2) {
+          vec2 wx = vec2(bx == -h ? 1.0 - f.x : 1.0, bx == h ? f.x : 1.0);  // columns bx, bx + 1
+          vec2 corner = (base + vec2(bx, by) + 1.0) / size;  // between the block's 4 texel centres
+          // textureGather order: (bx, by+1), (bx+1, by+1), (bx+1, by), (bx, by)
+          vec4 passed = textureGather(u_shadow_map, corner, receiver_depth_at(r, corner - r.coord.xy, u_depth_bias));
+          vec4 w = vec4(wx.x * wy.x, wx.y * wy.x, wx.y * wy.y, wx.x * wy.y);
+          sum += dot(passed, w);
+          total += dot(vec4(1.0), w);  // N^2 up to rounding; the same sum when every texel passes
+        }
       }
+      lit = sum / total;  // exactly 1 where all pass, 0 where none does
     }
-    lit = sum / total;  // exactly 1 where all pass, 0 where none does
 #else
-    vec2 texel = 1.0 / size;
+    vec2 texel = u_light_faces == 1 ? 1.0 / size : vec2(u_shadow_texel);  // six faces: one face texel
     float phi = noise_rotation(vec2(p));
     for (int i = 0; i < u_samples; ++i) {
       vec2 o = vogel_disk_sample(i, u_samples, phi) * u_radius * texel;

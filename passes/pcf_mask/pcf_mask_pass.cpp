@@ -30,7 +30,7 @@ class PcfMaskPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", compare_->id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
-    set_shadow_uniforms(p.program(), ctx.frame());
+    if (Status s = set_shadow_uniforms(p.program(), ctx.frame(), SixFaces::read); !s) return s;
     const gl::Program& prog = p.program();
     prog.set("u_depth_bias", ctx.real("depth_bias"));
     prog.set("u_box_size", ctx.integer("box_size"));  // odd: the declaration's step

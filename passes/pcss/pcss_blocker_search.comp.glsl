@@ -14,6 +14,8 @@
 // light (the filter writes 0 there whatever the blockers). Taps: `samples` Vogel-disk positions
 // rotated per pixel by 2 pi IGN(pixel), each a textureGather of 4 raw depths (so 4 x samples
 // texels), each compared against the receiver plane (Isidoro 2006) minus a constant bias.
+// A point light's six faces: taps placed by direction (shadow_tap), distances from the light
+// along each tap's ray, so the search runs on across face edges.
 #include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "sampling/sampling.glsl"
@@ -35,7 +37,7 @@ void main() {
   Receiver r;
   if (receiver_at(u_depth, u_normal, p, r) == RECEIVER_FILTERED) {
     add_receiver_plane(u_depth, p, r);
-    float d_r = light_distance(r.coord.z);
+    float d_r = receiver_light_distance(r);
     float width = min(blocker_search_width_uv(d_r) * u_light_size_scale, u_max_search_uv);
     float radius = 0.5 * width;
     float phi = noise_rotation(vec2(p));
@@ -43,11 +45,11 @@ void main() {
     int count = 0;
     for (int i = 0; i < u_samples; ++i) {
       vec2 o = vogel_disk_sample(i, u_samples, phi) * radius;
-      vec4 depths = textureGather(u_shadow_map, r.coord.xy + o, 0);
-      float ref = receiver_depth_at(r, o, u_depth_bias);
+      ShadowTap t = shadow_tap(r, o, u_depth_bias);
+      vec4 depths = textureGather(u_shadow_map, t.uv, 0);
       for (int k = 0; k < 4; ++k)
-        if (depths[k] < ref) {
-          sum += light_distance(depths[k]);
+        if (depths[k] < t.ref) {
+          sum += light_distance(depths[k]) * t.distance_scale;
           ++count;
         }
     }

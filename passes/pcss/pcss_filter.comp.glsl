@@ -36,7 +36,7 @@ void main() {
     lit = 0.0;  // facing away from the light: no taps needed
   } else if (d_b > 0.0 && kind == RECEIVER_FILTERED) {
     add_receiver_plane(u_depth, p, r);
-    float d_r = light_distance(r.coord.z);
+    float d_r = receiver_light_distance(r);
     float w_penumbra = min(penumbra_width_uv(d_r, d_b) * u_light_size_scale, u_max_filter_uv);
     float radius = 0.5 * w_penumbra;
     float phi = noise_rotation(vec2(p));

@@ -69,7 +69,7 @@ class SeparableFilterPass final : public exec::PassImpl {
     p.program().set("u_sigma", ctx.real("sigma"));
     p.program().set("u_depth_sigma", ctx.real("depth_sigma"));
     if (sigma_from_light) {
-      set_shadow_uniforms(p.program(), ctx.frame());
+      if (Status s = set_shadow_uniforms(p.program(), ctx.frame()); !s) return s;
       p.program().set("u_penumbra_height", static_cast<float>(penumbra_height));
     }
     ctx.dispatch_over(p, out.width(), out.height());

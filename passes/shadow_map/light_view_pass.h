@@ -17,6 +17,10 @@
 // culling (both faces cast), no blending. It leaves depth test and polygon offset disabled and
 // its framebuffer bound; every raster pass binds its own.
 //
+// A point light inside the scene (frame.shadow.six_faces): the built-in shadow_map draws the six
+// faces into tiles of its map (scene/light_faces.h), which shadow_common.glsl's readers follow;
+// a pass with colour targets refuses such a light with an Error, as its readers are its own.
+//
 // The fragment shader sees `v_uv` and the caster's material (caster_material.glsl: call
 // discard_uncovered() first), gl_FragCoord.z (the light's window depth before the polygon
 // offset, the value the depth map stores less its bias) and shadow_common.glsl's uniforms

@@ -30,8 +30,6 @@ class LightViewPass final : public exec::PassImpl {
     gl::ShaderProgram& p =
         ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl", .fragment = spec_.fragment_shader});
     if (!p.valid()) return *p.last_error();
-    if (!ctx.frame().shadow.unsupported.empty())
-      return make_error(spec_.type_name + ": " + ctx.frame().shadow.unsupported, ErrorKind::bad_input);
     gl::Texture& depth = ctx.texture("depth");
     ids_.assign(1, depth.id());  // this frame's targets (no allocation after the first frame)
     for (const LightViewTarget& t : spec_.colour_targets) ids_.push_back(ctx.texture(t.slot).id());
@@ -49,10 +47,20 @@ class LightViewPass final : public exec::PassImpl {
         glClearNamedFramebufferfv(fb_.id(), GL_COLOR, static_cast<GLint>(i), &clears_[i][0]);
       return {};
     }
-    set_shadow_uniforms(p.program(), ctx.frame());
+    const exec::FrameInputs& frame = ctx.frame();
+    // A plugin's fragment shader may compute what the map's readers do (light_distance, say):
+    // only the built-in depth map is read by techniques that know six faces.
+    const SixFaces six_faces = spec_.colour_targets.empty() ? SixFaces::read : SixFaces::refused;
+    if (Status s = set_shadow_uniforms(p.program(), frame, six_faces); !s) return s;
     if (spec_.set_uniforms) spec_.set_uniforms(ctx, p.program());
-    render_depth_map(fb_, p.program(), *ctx.frame().scene, ctx.frame().shadow.view_proj, ctx.real("slope_bias"),
-                     ctx.real("constant_bias"), 0, clears_);
+    const float slope = ctx.real("slope_bias"), constant = ctx.real("constant_bias");
+    if (!frame.shadow.six_faces) {
+      render_depth_map(fb_, p.program(), *frame.scene, frame.shadow.view_proj, slope, constant, 0, clears_);
+      return {};
+    }
+    Result<scene::PointLightFaces> faces = scene::point_light_faces(frame.light, frame.scene->cpu().bounds, depth.width());
+    if (!faces) return faces.error();
+    render_depth_faces(fb_, p.program(), *frame.scene, faces->faces, slope, constant, 0, clears_);
     return {};
   }
 
@@ -69,7 +77,16 @@ class LightViewPass final : public exec::PassImpl {
 void render_depth_map(const gl::Framebuffer& target, const gl::Program& program, const exec::GpuScene& scene,
                       const glm::mat4& view_proj, float slope_bias, float constant_bias, GLuint texture_unit,
                       const std::vector<glm::vec4>& colour_clears) {
+  const scene::LightFace whole{view_proj, glm::ivec2(0), 0};
+  render_depth_faces(target, program, scene, std::span(&whole, 1), slope_bias, constant_bias, texture_unit,
+                     colour_clears);
+}
+
+void render_depth_faces(const gl::Framebuffer& target, const gl::Program& program, const exec::GpuScene& scene,
+                        std::span<const scene::LightFace> faces, float slope_bias, float constant_bias,
+                        GLuint texture_unit, const std::vector<glm::vec4>& colour_clears) {
   target.bind();
+  glDisable(GL_SCISSOR_TEST);  // clears obey the scissor
   const float one = 1.0f;
   glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &one);
   for (size_t i = 0; i < colour_clears.size(); ++i)
@@ -81,8 +98,16 @@ void render_depth_map(const gl::Framebuffer& target, const gl::Program& program,
   glDepthFunc(GL_LESS);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(slope_bias, constant_bias);
-  program.set("u_light_view_proj", view_proj);
-  scene.draw(program, texture_unit, true);
+  for (const scene::LightFace& face : faces) {
+    if (face.size > 0) {  // a tile; 0: the whole target, as bound
+      glEnable(GL_SCISSOR_TEST);
+      glViewport(face.origin.x, face.origin.y, face.size, face.size);
+      glScissor(face.origin.x, face.origin.y, face.size, face.size);
+    }
+    program.set("u_light_view_proj", face.view_proj);
+    scene.draw(program, texture_unit, true);
+  }
+  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_DEPTH_TEST);
 }

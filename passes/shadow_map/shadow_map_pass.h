@@ -1,4 +1,5 @@
 #pragma once
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -6,6 +7,7 @@
 #include "exec/gpu_scene.h"
 #include "exec/pass.h"
 #include "gl/framebuffer.h"
+#include "scene/light_faces.h"
 
 namespace penumbra::passes {
 
@@ -20,5 +22,11 @@ exec::PassType shadow_map_pass_type();
 void render_depth_map(const gl::Framebuffer& target, const gl::Program& program, const exec::GpuScene& scene,
                       const glm::mat4& view_proj, float slope_bias, float constant_bias, GLuint texture_unit = 0,
                       const std::vector<glm::vec4>& colour_clears = {});
+
+// The same for a map of several views, each drawn inside its own tile (viewport and scissor):
+// a point light's six faces (scene/light_faces.h). The whole target is cleared first.
+void render_depth_faces(const gl::Framebuffer& target, const gl::Program& program, const exec::GpuScene& scene,
+                        std::span<const scene::LightFace> faces, float slope_bias, float constant_bias,
+                        GLuint texture_unit = 0, const std::vector<glm::vec4>& colour_clears = {});
 
 }  // namespace penumbra::passes

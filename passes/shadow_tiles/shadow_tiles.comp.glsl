@@ -24,6 +24,7 @@
 //                                      never with cleared texels.
 // The group reads the blocks of the read region together; regions wider than kMaxBlocks blocks each
 // way are not classified (penumbra): size the planes (shadow/N) so the reach spans a few blocks.
+// A point light's six faces (shadow_common.glsl) are not classified either.
 #include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "common/receiver_plane.glsl"
@@ -88,8 +89,11 @@ void main() {
   }
   barrier();
 
-  if (s_first == 0xffffffffu) {  // no receiver: the kinds above decide
+  // A point light's six faces: one plane per block cannot bound taps that may read another face's
+  // tile, so a tile with a receiver to filter is penumbra.
+  if (s_first == 0xffffffffu || u_light_faces != 1) {  // no receiver: the kinds above decide
     if (i == 0u) {
+      if (s_first != 0xffffffffu) s_all_lit = s_all_umbra = false;
       float tile_class = s_all_lit ? TILE_LIT : s_all_umbra ? TILE_UMBRA : TILE_PENUMBRA;
       imageStore(u_tile_class, ivec2(gl_WorkGroupID.xy), vec4(tile_class));
       if (tile_class == TILE_PENUMBRA) tile_list_append(gl_WorkGroupID.xy);

@@ -46,7 +46,7 @@ class ShadowTilesPass final : public exec::PassImpl {
     ctx.bind_image(0, "tile_class", GL_WRITE_ONLY);
     ctx.reset_tile_list("tiles");
     ctx.bind_tile_list(kScreenTileListBinding, "tiles");
-    set_shadow_uniforms(p.program(), ctx.frame());
+    if (Status s = set_shadow_uniforms(p.program(), ctx.frame(), SixFaces::read); !s) return s;
     const float texel = 1.0f / static_cast<float>(ctx.frame().shadow_size);
     // The largest tap offset of the filters this classifies for (shadow_tiles.comp.glsl).
     const float box_reach = ctx.integer("filter_box_size") > 0 ? 0.5f * float(ctx.integer("filter_box_size") + 1) : 0.0f;

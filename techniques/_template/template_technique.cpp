@@ -19,7 +19,7 @@ class TemplateMaskPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_depth", "depth");  // slot -> texture unit -> uniform
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);       // layout(binding = 0) in the shader
-    passes::set_shadow_uniforms(p.program(), ctx.frame());  // shadow_common.glsl's uniforms
+    if (Status s = passes::set_shadow_uniforms(p.program(), ctx.frame()); !s) return s;  // shadow_common.glsl's uniforms
     p.program().set("u_strength", ctx.real("strength"));    // live value of "$shadow_strength"
     ctx.dispatch_over(p, ctx.texture("mask"));     // one thread per mask texel
     return {};

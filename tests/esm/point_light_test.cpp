@@ -100,7 +100,7 @@ TEST(EsmPointLight, SixFacesNoSeams) {
               jump_sum / static_cast<double>(pairs), worst_jump);
   // Across a seam the mask changes no more than the exact shadow does, on average over all the
   // pixel pairs that straddle one. Measured: 0.0061 (worst pair 0.34, an anti-aliased edge pixel);
-  // without the faces' guard band (kGuardTexels = 0), where lookups near a seam are clamped to
+  // without the faces' guard band (scene::kFaceGuardTexels = 0), where lookups near a seam are clamped to
   // the tile, 0.0119. Bound 0.009.
   EXPECT_LE(jump_sum / static_cast<double>(pairs), 0.009) << "shadow edges jump at the seams";
   EXPECT_EQ(faces_seen.size(), 6u) << "every face has receivers in some view";

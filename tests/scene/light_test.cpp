@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/light.h"
+#include "scene/light_faces.h"
 #include "scene/scene.h"
 
 using namespace penumbra;
@@ -51,9 +53,8 @@ TEST(ShadowFrustum, DirectionalCoversBoundsAndSpotIsPerspective) {
 }
 
 // A point light outside the bounds gets one perspective frustum towards the bounds that contains
-// every corner; inside the bounds no single frustum can, and the frustum says so (the one-map
-// techniques turn that into an Error; esm renders six faces).
-TEST(ShadowFrustum, PointLightOutsideBoundsIsAFittedSpotInsideIsUnsupported) {
+// every corner; inside the bounds no single frustum can, and the frustum asks for six faces.
+TEST(ShadowFrustum, PointLightOutsideBoundsIsAFittedSpotInsideHasSixFaces) {
   scene::Bounds b;
   b.extend(glm::vec3(-5, 0, -5));
   b.extend(glm::vec3(5, 2, 5));
@@ -62,7 +63,7 @@ TEST(ShadowFrustum, PointLightOutsideBoundsIsAFittedSpotInsideIsUnsupported) {
   l.direction = glm::vec3(1, 0, 0);  // not used by a point light's frustum
   l.position = {3.0f, 9.0f, 4.0f};
   scene::ShadowFrustum f = scene::shadow_frustum(l, b);
-  EXPECT_TRUE(f.unsupported.empty()) << f.unsupported;
+  EXPECT_FALSE(f.six_faces);
   EXPECT_FALSE(f.orthographic);
   EXPECT_GT(f.tan_half_fov, 0.0f);
   EXPECT_GT(f.near_plane, 0.0f);
@@ -79,10 +80,10 @@ TEST(ShadowFrustum, PointLightOutsideBoundsIsAFittedSpotInsideIsUnsupported) {
 
   l.position = {0.0f, 1.0f, 0.0f};  // inside
   f = scene::shadow_frustum(l, b);
-  EXPECT_NE(f.unsupported.find("inside the scene bounds"), std::string::npos) << f.unsupported;
+  EXPECT_TRUE(f.six_faces);
   l.position = {5.01f, 1.0f, 0.0f};  // just outside a face: would need ~90 degrees
   f = scene::shadow_frustum(l, b);
-  EXPECT_FALSE(f.unsupported.empty());
+  EXPECT_TRUE(f.six_faces);
 }
 
 TEST(ShadowFrustum, SpotFrustumReportsItsHalfAngle) {
@@ -95,7 +96,7 @@ TEST(ShadowFrustum, SpotFrustumReportsItsHalfAngle) {
   l.spot_angle = glm::radians(30.0f);
   const scene::ShadowFrustum f = scene::shadow_frustum(l, b);
   EXPECT_NEAR(f.tan_half_fov, std::tan(glm::radians(30.0f)), 1e-5f);
-  EXPECT_TRUE(f.unsupported.empty());
+  EXPECT_FALSE(f.six_faces);
 }
 
 // A point light's emitter is a sphere: every receiver sees the disk through the centre facing it.
@@ -132,4 +133,47 @@ TEST(BlockerHeightScale, TheScenesHeightAlongTheLightsRays) {
   l.position = {0.0f, 6.0f, 4.0f};   // 45 degrees above it
   EXPECT_NEAR(scene::blocker_height_scale(l, b), 2.0f * std::sqrt(2.0f), 1e-4f);
   EXPECT_EQ(scene::blocker_height_scale(l, scene::Bounds{}), 1.0f) << "no bounds";
+}
+
+// The six faces cover every direction: each direction projects inside its own face's tile at
+// least kFaceGuardTexels from the tile's edges, and the faces' tiles do not overlap.
+TEST(PointLightFaces, EveryDirectionLandsInsideItsFaceTileWithTheGuardBand) {
+  scene::Bounds b;
+  b.extend(glm::vec3(-4.0f));
+  b.extend(glm::vec3(4.0f));
+  scene::Light l;
+  l.type = scene::LightType::point;
+  l.position = {0.5f, -1.0f, 0.3f};
+  const int map = 300;
+  Result<scene::PointLightFaces> faces = scene::point_light_faces(l, b, map);
+  ASSERT_TRUE(faces) << faces.error().to_string();
+  EXPECT_EQ(faces->tile, 100);
+  float worst = 1e9f;
+  for (int i = 0; i < 4000; ++i) {  // a spiral over the sphere, corners of the cube included
+    const float z = 1.0f - 2.0f * (i + 0.5f) / 4000.0f, a = 2.39996f * i;
+    glm::vec3 d(std::sqrt(1.0f - z * z) * std::cos(a), z, std::sqrt(1.0f - z * z) * std::sin(a));
+    if (i < 8) d = glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    const int f = scene::light_face_of(d);
+    const scene::LightFace& face = faces->faces[f];
+    const glm::vec4 clip = face.view_proj * glm::vec4(l.position + 2.0f * glm::normalize(d), 1.0f);
+    ASSERT_GT(clip.w, 0.0f);
+    const glm::vec2 texel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * static_cast<float>(face.size);
+    worst = std::min({worst, texel.x, texel.y, face.size - texel.x, face.size - texel.y});
+    EXPECT_GE(glm::vec2(face.origin).x, 0.0f);
+    EXPECT_LE(face.origin.x + face.size, map);
+    EXPECT_LE(face.origin.y + face.size, map);
+  }
+  EXPECT_GE(worst, scene::kFaceGuardTexels - 1e-3f);
+  EXPECT_LT(worst, scene::kFaceGuardTexels + 0.5f) << "the guard band is no wider than asked";
+  for (int f = 0; f < 6; ++f)
+    for (int g = f + 1; g < 6; ++g) EXPECT_NE(faces->faces[f].origin, faces->faces[g].origin);
+}
+
+TEST(PointLightFaces, AMapTooSmallForSixFacesIsAnErrorNamingBothSizes) {
+  scene::Light l;
+  l.type = scene::LightType::point;
+  Result<scene::PointLightFaces> faces = scene::point_light_faces(l, {}, 40);
+  ASSERT_FALSE(faces);
+  EXPECT_NE(faces.error().message.find("48"), std::string::npos) << faces.error().message;
+  EXPECT_NE(faces.error().message.find("40"), std::string::npos) << faces.error().message;
 }

@@ -8,6 +8,7 @@
 #include "exec/gpu_scene.h"
 #include "exec/pass_decl_builder.h"
 #include "gl/framebuffer.h"
+#include "passes/shadow_map/shadow_map_pass.h"
 #include "techniques/esm/passes/esm_pass_common.h"
 #include "techniques/esm/passes/esm_pass_types.h"
 
@@ -46,26 +47,12 @@ class DepthPass final : public exec::PassImpl {
     // them (the graph plans barriers by the slot's declared use, an attachment, so this pass adds
     // the one its compute clear needs).
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    fb_.bind();
-    glDisable(GL_SCISSOR_TEST);  // clears obey the scissor
-    const float far_depth = 1.0f;
-    glClearNamedFramebufferfv(fb_.id(), GL_DEPTH, 0, &far_depth);
-    if (!ctx.frame().scene) return {};
-    const gl::Program& prog = p.program();
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(ctx.real("slope_bias"), ctx.real("constant_bias"));
-    glEnable(GL_SCISSOR_TEST);
-    for (const EsmFace& f : views->faces) {
-      glViewport(f.origin.x, f.origin.y, f.size, f.size);
-      glScissor(f.origin.x, f.origin.y, f.size, f.size);
-      prog.set("u_light_view_proj", f.view_proj);
-      ctx.frame().scene->draw(prog, 0, true);
+    if (!ctx.frame().scene) {
+      depth.clear(1.0f);
+      return {};
     }
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_DEPTH_TEST);
+    passes::render_depth_faces(fb_, p.program(), *ctx.frame().scene, views->faces, ctx.real("slope_bias"),
+                               ctx.real("constant_bias"));
     return {};
   }
 

@@ -39,7 +39,7 @@ class MaskPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_esm", "esm", nearest_.id());  // texel fetches and one gather
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     const gl::Program& prog = p.program();
-    passes::set_shadow_uniforms(prog, ctx.frame());  // faces_away_from_light()
+    if (Status s = passes::set_shadow_uniforms(prog, ctx.frame(), passes::SixFaces::read); !s) return s;  // faces_away_from_light()
     set_view_uniforms(prog, *views);
     prog.set("u_depth_bias", ctx.real("depth_bias"));
     prog.set("u_boundary", boundary_litness(ctx.real("boundary_shift")));

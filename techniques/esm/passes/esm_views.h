@@ -3,14 +3,10 @@
 // (the frame's shadow frustum, the whole map), six for a point light (Bujnak, sections 4 and 6:
 // "point lights as six separate spot lights"), each a square tile of the map.
 //
-// Point-light layout: tiles of T = floor(map / 3) texels, three columns by two rows from the
-// map's origin (+X -X +Y / -Y +Z -Z); the map's top third is unused, so ask for a map three
-// times the face size (a 1536^2 map holds six 512^2 faces). Each face's frustum is wider than
-// 90 degrees by kGuardTexels texels on every side: a receiver picks its face by the major axis
-// of its direction from the light, so it always lies at least kGuardTexels inside that face, and
-// everything the shadow test reads around it (the 2x2 bilinear footprint, the silhouette quads
-// of edges up to the quad band away) was rendered into the same tile. No lookup ever crosses a
-// face boundary, so no seam can show.
+// Point lights use the shared six-face layout (scene/light_faces.h): each face a square tile of
+// the map, wider than 90 degrees by scene::kFaceGuardTexels so that everything the shadow test
+// reads around a receiver (the 2x2 bilinear footprint, the silhouette quads of edges up to the
+// quad band away) was rendered into the same tile: no lookup crosses a face boundary.
 //
 //   Result<EsmViews> v = make_esm_views(frame.light, frame.shadow, bounds, esm_texture.width());
 //   for (const EsmFace& f : v->faces) { glViewport(f.origin.x, f.origin.y, f.size, f.size); draw(f.view_proj); }
@@ -19,22 +15,13 @@
 #include <glm/glm.hpp>
 
 #include "scene/light.h"
+#include "scene/light_faces.h"
 #include "scene/scene.h"
 #include "util/error.h"
 
 namespace penumbra::esm {
 
-// Texels each point-light face extends beyond 90 degrees on every side: the bilinear footprint
-// (1 texel) + the silhouette quads' outer band (2 sqrt 2 texels, esm_common.glsl) + margin.
-inline constexpr int kGuardTexels = 5;
-// Smallest point-light face (texels).
-inline constexpr int kMinFaceSize = 16;
-
-struct EsmFace {
-  glm::mat4 view_proj{1.0f};  // world -> clip (OpenGL convention)
-  glm::ivec2 origin{0};       // tile origin in the map, texels
-  int size = 0;               // tile side, texels
-};
+using EsmFace = scene::LightFace;
 
 struct EsmViews {
   std::vector<EsmFace> faces;   // 1, or 6 for a point light (+X, -X, +Y, -Y, +Z, -Z)
@@ -51,8 +38,8 @@ struct EsmViews {
 Result<EsmViews> make_esm_views(const scene::Light& light, const scene::ShadowFrustum& single,
                                 const scene::Bounds& bounds, int map_size);
 
-// The face a world position belongs to (major axis of position - light), 0 for one-view lights;
-// the same rule as esm_face() in esm_views.glsl.
+// The face a world position belongs to (scene::light_face_of its direction from the light), 0
+// for one-view lights; the same rule as esm_face() in esm_views.glsl.
 int esm_face_of(const EsmViews& views, const glm::vec3& world);
 
 }  // namespace penumbra::esm

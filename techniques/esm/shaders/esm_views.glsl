@@ -1,5 +1,6 @@
 // The extended shadow map's views (passes/esm_views.h): one face for directional and spot
 // lights, six for a point light, each a square tile of the map. Set by set_esm_view_uniforms().
+#include "common/light_faces.glsl"
 uniform mat4 u_face_view_proj[6];  // world -> clip of each face
 uniform vec4 u_face_rect[6];       // tile origin (texels) xy, tile side (texels) z
 uniform int u_face_count;          // 1 or 6
@@ -9,16 +10,9 @@ uniform float u_esm_near;          // world units
 uniform float u_esm_far;
 uniform float u_esm_texel_scale;   // world size of a texel: ortho this; perspective distance x this
 
-// The face a world position is shadowed through: the major axis of its direction from a point
-// light (+X -X +Y -Y +Z -Z), the only face otherwise (esm_face_of() on the CPU).
-int esm_face(vec3 world) {
-  if (u_face_count == 1) return 0;
-  vec3 d = world - u_esm_light.xyz;
-  vec3 a = abs(d);
-  if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;
-  if (a.y >= a.z) return d.y >= 0.0 ? 2 : 3;
-  return d.z >= 0.0 ? 4 : 5;
-}
+// The face a world position is shadowed through: that of its direction from a point light
+// (light_faces.glsl), the only face otherwise (esm_face_of() on the CPU).
+int esm_face(vec3 world) { return u_face_count == 1 ? 0 : light_face(world - u_esm_light.xyz); }
 
 // (x, y) in texels of the whole map (texel centres at +0.5) and z the window depth [0, 1] of a
 // world position seen through face `face`; w = 1 inside the face's frustum, 0 outside.

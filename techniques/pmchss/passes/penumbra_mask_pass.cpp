@@ -38,7 +38,7 @@ class PenumbraMaskPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", nearest_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
-    set_pmchss_uniforms(p.program(), ctx);
+    if (Status s = set_pmchss_uniforms(p.program(), ctx); !s) return s;
     p.program().set("u_default_one", ctx.boolean("default_one") ? 1 : 0);
     p.program().set("u_blur_sigma", ctx.real("blur_sigma"));
     ctx.dispatch_tiles(p, mask.width(), mask.height(), tile);

@@ -38,14 +38,15 @@ std::vector<ParamDesc> penumbra_params() {
                      "wide kernels)")};
 }
 
-void set_pmchss_uniforms(const gl::Program& p, exec::PassContext& ctx) {
-  passes::set_shadow_uniforms(p, ctx.frame());
+Status set_pmchss_uniforms(const gl::Program& p, exec::PassContext& ctx) {
+  if (Status s = passes::set_shadow_uniforms(p, ctx.frame()); !s) return s;
   float max_size = ctx.real("shadow_filter_max_size");
   p.set("u_shadow_filter_max_size", max_size);
   p.set("u_search_radius", max_size * ctx.real("penumbra_kernel_scale"));
   p.set("u_penumbra_k", ctx.real("k"));
   p.set("u_depth_bias", ctx.real("depth_bias"));
   p.set("u_receiver_plane", ctx.boolean("receiver_plane_bias") ? 1 : 0);
+  return {};
 }
 
 std::pair<std::string, std::string> mapping_define(exec::PassContext& ctx) {

@@ -27,7 +27,7 @@ graph::ParamDesc penumbra_kernel_scale_param();
 
 // Sets u_shadow_filter_max_size, u_search_radius, u_penumbra_k, u_depth_bias,
 // u_receiver_plane and the light uniforms (shadow_common.glsl).
-void set_pmchss_uniforms(const gl::Program& program, exec::PassContext& ctx);
+[[nodiscard]] Status set_pmchss_uniforms(const gl::Program& program, exec::PassContext& ctx);
 
 // PENUMBRA_MAPPING: 0 paper, 1 physical, 2 fixed (pmchss_common.glsl).
 std::pair<std::string, std::string> mapping_define(exec::PassContext& ctx);

@@ -47,7 +47,7 @@ class ShadowMaskPass final : public exec::PassImpl {
     if (source == "mask") ctx.bind_sampled(p, "u_penumbra_mask", "penumbra_mask", linear_.id());
     if (source == "min_depth") ctx.bind_sampled(p, "u_min_depth", "min_depth", linear_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
-    set_pmchss_uniforms(p.program(), ctx);
+    if (Status s = set_pmchss_uniforms(p.program(), ctx); !s) return s;
     ctx.dispatch_over(p, mask.width(), mask.height());
     return {};
   }

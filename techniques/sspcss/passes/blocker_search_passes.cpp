@@ -24,11 +24,11 @@ exec::PassDeclBuilder search_pass(const char* name, const char* description) {
   return b;
 }
 
-void set_common(const gl::ShaderProgram& p, exec::PassContext& ctx) {
+Status set_common(const gl::ShaderProgram& p, exec::PassContext& ctx) {
   set_screen_uniforms(p.program(), ctx.frame());
   set_range_uniforms(p.program(), ctx);
-  set_penumbra_uniforms(p.program(), ctx);
   set_footprint_uniform(p.program(), ctx);
+  return set_penumbra_uniforms(p.program(), ctx);
 }
 
 class SearchRowsPass final : public exec::PassImpl {
@@ -40,7 +40,7 @@ class SearchRowsPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_projected", "projected");
     ctx.bind_image(0, "rows", GL_WRITE_ONLY);
-    set_common(p, ctx);
+    if (Status s = set_common(p, ctx); !s) return s;
     set_separable_uniforms(p.program(), ctx);
     ctx.dispatch_over(p, ctx.texture("rows"));
     return {};
@@ -57,7 +57,7 @@ class SearchColumnsPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_rows", "rows");
     ctx.bind_image(0, "blocker", GL_WRITE_ONLY);
     ctx.bind_image(1, "penumbra", GL_WRITE_ONLY);
-    set_common(p, ctx);
+    if (Status s = set_common(p, ctx); !s) return s;
     set_separable_uniforms(p.program(), ctx);
     set_fixed_radius_uniform(p.program(), ctx);
     ctx.dispatch_over(p, ctx.texture("blocker"));
@@ -75,7 +75,7 @@ class SearchPoissonPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_projected", "projected");
     ctx.bind_image(0, "blocker", GL_WRITE_ONLY);
     ctx.bind_image(1, "penumbra", GL_WRITE_ONLY);
-    set_common(p, ctx);
+    if (Status s = set_common(p, ctx); !s) return s;
     set_poisson_uniforms(p.program(), ctx, disk_);
     set_fixed_radius_uniform(p.program(), ctx);
     ctx.dispatch_over(p, ctx.texture("blocker"));

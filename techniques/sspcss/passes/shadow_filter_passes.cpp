@@ -28,15 +28,15 @@ exec::PassDeclBuilder filter_pass(const char* name, const char* description) {
   return b;
 }
 
-void bind_common(const gl::ShaderProgram& p, exec::PassContext& ctx) {
+Status bind_common(const gl::ShaderProgram& p, exec::PassContext& ctx) {
   ctx.bind_sampled(p, "u_depth", "depth");
   ctx.bind_sampled(p, "u_normal", "normal");
   ctx.bind_sampled(p, "u_projected", "projected");
   ctx.bind_sampled(p, "u_penumbra", "penumbra");
   set_screen_uniforms(p.program(), ctx.frame());
   set_range_uniforms(p.program(), ctx);
-  passes::set_shadow_uniforms(p.program(), ctx.frame());
   set_footprint_uniform(p.program(), ctx);
+  return passes::set_shadow_uniforms(p.program(), ctx.frame());
 }
 
 class FilterRowsPass final : public exec::PassImpl {
@@ -44,7 +44,7 @@ class FilterRowsPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/sspcss/shaders/shadow_filter_x.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    bind_common(p, ctx);
+    if (Status s = bind_common(p, ctx); !s) return s;
     ctx.bind_image(0, "rows", GL_WRITE_ONLY);
     set_separable_uniforms(p.program(), ctx);
     ctx.dispatch_over(p, ctx.texture("rows"));
@@ -57,7 +57,7 @@ class FilterColumnsPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/sspcss/shaders/shadow_filter_y.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    bind_common(p, ctx);
+    if (Status s = bind_common(p, ctx); !s) return s;
     ctx.bind_sampled(p, "u_rows", "rows");
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     set_separable_uniforms(p.program(), ctx);
@@ -71,7 +71,7 @@ class FilterPoissonPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/sspcss/shaders/shadow_filter_poisson.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    bind_common(p, ctx);
+    if (Status s = bind_common(p, ctx); !s) return s;
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     set_poisson_uniforms(p.program(), ctx, disk_);
     ctx.dispatch_over(p, ctx.texture("mask"));

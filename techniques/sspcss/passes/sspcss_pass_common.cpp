@@ -70,10 +70,11 @@ void set_range_uniforms(const gl::Program& p, exec::PassContext& ctx) {
   p.set("u_range_term", ctx.boolean("range_term") ? 1 : 0);
 }
 
-void set_penumbra_uniforms(const gl::Program& p, exec::PassContext& ctx) {
-  passes::set_shadow_uniforms(p, ctx.frame());
+Status set_penumbra_uniforms(const gl::Program& p, exec::PassContext& ctx) {
+  if (Status s = passes::set_shadow_uniforms(p, ctx.frame()); !s) return s;
   p.set("u_light_size_scale", ctx.real("light_size_scale"));
   p.set("u_max_penumbra_px", ctx.real("max_penumbra_px"));
+  return {};
 }
 
 void set_fixed_radius_uniform(const gl::Program& p, exec::PassContext& ctx) {

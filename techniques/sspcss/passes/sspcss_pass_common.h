@@ -32,7 +32,7 @@ void set_footprint_uniform(const gl::Program& program, exec::PassContext& ctx);
 // u_depth_sigma, u_range_term.
 void set_range_uniforms(const gl::Program& program, exec::PassContext& ctx);
 // The light (shadow_common.glsl), u_light_size_scale, u_max_penumbra_px.
-void set_penumbra_uniforms(const gl::Program& program, exec::PassContext& ctx);
+[[nodiscard]] Status set_penumbra_uniforms(const gl::Program& program, exec::PassContext& ctx);
 // u_fixed_radius_px (passes that write penumbra_width).
 void set_fixed_radius_uniform(const gl::Program& program, exec::PassContext& ctx);
 // u_taps from separable_taps.
