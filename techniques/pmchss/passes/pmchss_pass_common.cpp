@@ -39,7 +39,7 @@ std::vector<ParamDesc> penumbra_params() {
 }
 
 Status set_pmchss_uniforms(const gl::Program& p, exec::PassContext& ctx) {
-  if (Status s = passes::set_shadow_uniforms(p, ctx.frame()); !s) return s;
+  if (Status s = passes::set_shadow_uniforms(p, ctx.frame(), passes::SixFaces::read); !s) return s;
   float max_size = ctx.real("shadow_filter_max_size");
   p.set("u_shadow_filter_max_size", max_size);
   p.set("u_search_radius", max_size * ctx.real("penumbra_kernel_scale"));

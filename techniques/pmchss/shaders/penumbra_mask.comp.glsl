@@ -18,7 +18,7 @@
 // block (penumbra_mask_pass.cpp, PassContext::dispatch_tiles).
 //
 // Defines: BLUR (0/1), MAX_FILTER (0/1); OUTPUT_BLOCKER_DEPTH turns the search into the debug
-// view of the average blocker window depth (1 = no blocker) instead of the penumbra.
+// view of the average blocker distance over the far plane (1 = no blocker) instead of the penumbra.
 #define REGION 32
 layout(local_size_x = REGION, local_size_y = REGION) in;
 #include "common/shadow_common.glsl"
@@ -53,18 +53,16 @@ float search(ivec2 p, ivec2 mask_size, ivec2 full_size) {
 #endif
   vec4 pos = gbuffer_position(u_depth, full);
   if (pos.w <= 0.0) return value;
-  Receiver r;
-  r.coord = shadow_coord(pos.xyz);
-  if (!pmchss_in_shadow_frustum(r.coord)) return value;
-  r.dz_duv = receiver_depth_gradient(u_depth, full, pos.xyz, gbuffer_normal(u_normal, full), r.coord);
+  if (!pmchss_in_shadow_frustum(shadow_coord(pos.xyz))) return value;
+  Receiver r = pmchss_receiver(u_depth, u_normal, full, pos.xyz);
   // Noise on the mask's own pixel grid: neighbouring mask texels get different rotations.
   float phi = pmchss_noise_phi(p, false);
   float blocker;
   float count = pmchss_blocker_search(u_shadow_map, r, BLOCKER_SAMPLES, phi, blocker);
 #ifdef OUTPUT_BLOCKER_DEPTH
-  return blocker;
+  return blocker / u_light_far;
 #else
-  return count > 0.0 ? pmchss_penumbra_from_blocker(r.coord.z, blocker) : value;
+  return count > 0.0 ? pmchss_penumbra_from_blocker(receiver_light_distance(r), blocker) : value;
 #endif
 }
 

@@ -5,7 +5,8 @@
 // Depth domains: the shadow map holds the light's WINDOW depth in [0, 1]; comparisons happen
 // there (with bias). The penumbra mapping works on light-VIEW distances in world units
 // (light_distance()), as the paper's demo does ("depths are all in shadow map's view space",
-// section 2.1).
+// section 2.1). A point light's six faces: every tap placed by direction (shadow_tap,
+// receiver_plane.glsl), distances along the taps' rays.
 
 // Set by set_pmchss_uniforms() (pmchss_uniforms.cpp).
 uniform float u_shadow_filter_max_size;  // shadow-map UV, radius of the largest PCF kernel
@@ -23,17 +24,31 @@ float pmchss_noise_phi(ivec2 pixel, bool checker) {
   return noise_rotation(centre);
 }
 
-// Receiver depth compared against a tap at uv offset `o`: the receiver plane's depth there
-// minus the constant bias (receiver_depth_at, passes/common/receiver_plane.glsl: the code every
-// filtering technique shares); with receiver_plane_bias off, the plane is flat.
-float pmchss_receiver_depth(Receiver r, vec2 o) {
+// The tap at uv offset `o` and the receiver depth it is compared with: the receiver plane's depth
+// there minus the constant bias (shadow_tap, passes/common/receiver_plane.glsl: the code every
+// filtering technique shares); with receiver_plane_bias off, the plane is flat (one view; six
+// faces always meet the receiver's plane along the tap's ray).
+ShadowTap pmchss_tap(Receiver r, vec2 o) {
   if (u_receiver_plane == 0) r.dz_duv = vec2(0.0);
-  return receiver_depth_at(r, o, u_depth_bias);
+  return shadow_tap(r, o, u_depth_bias);
+}
+
+// A receiver of the G-buffer at `pixel` (world position `pos`) in light space: coordinate, world
+// position, normal and receiver plane.
+Receiver pmchss_receiver(sampler2D depths, sampler2D normals, ivec2 pixel, vec3 pos) {
+  Receiver r;
+  r.world = pos;
+  r.normal = gbuffer_normal(normals, pixel);
+  r.coord = shadow_coord(pos);
+  r.dz_duv = vec2(0.0);
+  add_receiver_plane(depths, pixel, r);
+  return r;
 }
 
 // Average blocker search, section 2.1, Listing 3: N Vogel taps inside the search radius, point
 // sampled; taps closer to the light than the receiver are blockers and their depths averaged.
-// Returns the number of blockers; `avg_window_depth` is their mean window depth.
+// Returns the number of blockers; `avg_distance` is the distance from the light (world units)
+// of their mean depth, the far plane where there is none.
 // Search radius, shadow-map UV. The paper's is fixed: penumbra_kernel_scale x the largest
 // kernel radius (section 2.2: wider than the filter, so the low-resolution mask covers the whole
 // penumbra). The physical mapping knows this receiver's largest kernel: half the penumbra of a
@@ -44,26 +59,29 @@ float pmchss_receiver_depth(Receiver r, vec2 o) {
 // blurred afterwards, so it must find blockers beyond the penumbra it marks.
 float pmchss_search_radius(Receiver r) {
 #if PENUMBRA_MAPPING == 1 && !defined(PENUMBRA_MASK_SEARCH)
-  float largest_kernel = min(0.5 * blocker_search_width_uv(light_distance(r.coord.z)), u_shadow_filter_max_size);
+  float largest_kernel = min(0.5 * blocker_search_width_uv(receiver_light_distance(r)), u_shadow_filter_max_size);
   return largest_kernel * (u_search_radius / u_shadow_filter_max_size);
 #else
   return u_search_radius;
 #endif
 }
 
-float pmchss_blocker_search(sampler2D shadow_map, Receiver r, int n, float phi, out float avg_window_depth) {
+float pmchss_blocker_search(sampler2D shadow_map, Receiver r, int n, float phi, out float avg_distance) {
   float sum = 0.0;
   float count = 0.0;
   const float radius = pmchss_search_radius(r);
   for (int i = 0; i < n; ++i) {
-    vec2 o = radius * vogel_disk_sample(i, n, phi);
-    float d = textureLod(shadow_map, r.coord.xy + o, 0.0).r;
-    if (d < pmchss_receiver_depth(r, o)) {
-      sum += d;
+    ShadowTap t = pmchss_tap(r, radius * vogel_disk_sample(i, n, phi));
+    float d = textureLod(shadow_map, t.uv, 0.0).r;
+    // One view averages window depths as Listing 3 does (k was calibrated so); six faces' window
+    // depths belong to different faces, so their distances along the rays are averaged.
+    if (d < t.ref) {
+      sum += u_light_faces == 1 ? d : light_distance(d) * t.distance_scale;
       count += 1.0;
     }
   }
-  avg_window_depth = count > 0.0 ? sum / count : 1.0;
+  if (count > 0.0 && u_light_faces == 1) sum = light_distance(sum / count) * count;
+  avg_distance = count > 0.0 ? sum / count : u_light_far;
   return count;
 }
 
@@ -75,12 +93,12 @@ float pmchss_blocker_search(sampler2D shadow_map, Receiver r, int n, float phi, 
 //               shadow_common.glsl); the kernel radius is w / 2 (a disk kernel of radius R
 //               turns a hard edge into a ramp 2R wide).
 //   2 fixed:    1, no contact hardening (Table 1's "Regular Shadow Mask")
-float pmchss_penumbra_from_blocker(float z_window, float blocker_window) {
+// d_r, d_b: the receiver's and the mean blocker's distances from the light, world units.
+float pmchss_penumbra_from_blocker(float d_r, float d_b) {
 #if PENUMBRA_MAPPING == 2
   return 1.0;
 #else
-  float d_r = light_distance(z_window);
-  float d_b = max(light_distance(blocker_window), 1e-4);
+  d_b = max(d_b, 1e-4);
 #if PENUMBRA_MAPPING == 0
   float p = (d_r - d_b) / d_b;
   return clamp(u_penumbra_k * p * p, 0.0, 1.0);
@@ -99,11 +117,13 @@ float pmchss_filter(sampler2DShadow shadow_cmp, Receiver r, float penumbra, floa
   // A kernel narrower than a texel puts all FILTER_SAMPLES taps on the same 2x2 footprint:
   // one tap gives the same value (this is where the paper's penumbra-mask speed-up comes from
   // on a GPU whose cache already holds the whole shadow map: contact and fully lit pixels).
-  if (radius < 0.5 * u_shadow_texel)
-    return texture(shadow_cmp, vec3(r.coord.xy, pmchss_receiver_depth(r, vec2(0.0))));
+  if (radius < 0.5 * u_shadow_texel) {
+    ShadowTap t = pmchss_tap(r, vec2(0.0));
+    return texture(shadow_cmp, vec3(t.uv, t.ref));
+  }
   for (int i = 0; i < FILTER_SAMPLES; ++i) {
-    vec2 o = radius * vogel_disk_sample(i, FILTER_SAMPLES, phi);
-    lit += texture(shadow_cmp, vec3(r.coord.xy + o, pmchss_receiver_depth(r, o)));
+    ShadowTap t = pmchss_tap(r, radius * vogel_disk_sample(i, FILTER_SAMPLES, phi));
+    lit += texture(shadow_cmp, vec3(t.uv, t.ref));
   }
   return lit / float(FILTER_SAMPLES);
 }

@@ -37,10 +37,8 @@ float shadow_at(ivec2 pixel, ivec2 screen, bool checker) {
   // A receiver facing away from the light is in its own shadow (closed geometry); its depth is
   // too close to the occluding front face for any bias to classify it reliably.
   if (faces_away_from_light(pos.xyz, gbuffer_normal(u_normal, pixel))) return 0.0;
-  Receiver r;
-  r.coord = shadow_coord(pos.xyz);
-  if (!pmchss_in_shadow_frustum(r.coord)) return 1.0;
-  r.dz_duv = receiver_depth_gradient(u_depth, pixel, pos.xyz, gbuffer_normal(u_normal, pixel), r.coord);
+  if (!pmchss_in_shadow_frustum(shadow_coord(pos.xyz))) return 1.0;
+  Receiver r = pmchss_receiver(u_depth, u_normal, pixel, pos.xyz);
   vec3 c = r.coord;
   float phi = pmchss_noise_phi(pixel, checker);
 #if PENUMBRA_MAPPING == 2
@@ -48,12 +46,14 @@ float shadow_at(ivec2 pixel, ivec2 screen, bool checker) {
 #elif PENUMBRA_SOURCE == 0
   float blocker;
   float count = pmchss_blocker_search(u_shadow_map, r, BLOCKER_SAMPLES, phi, blocker);
-  float penumbra = count > 0.0 ? pmchss_penumbra_from_blocker(c.z, blocker) : 0.0;
+  float penumbra = count > 0.0 ? pmchss_penumbra_from_blocker(receiver_light_distance(r), blocker) : 0.0;
 #elif PENUMBRA_SOURCE == 1
   float penumbra = textureLod(u_penumbra_mask, (vec2(pixel) + 0.5) / vec2(screen), 0.0).r;
 #else
-  // Section 2.3: the min depth is used directly as the average blocker depth.
-  float penumbra = pmchss_penumbra_from_blocker(c.z, textureLod(u_min_depth, c.xy, 0.0).r);
+  // Section 2.3: the min depth is used directly as the average blocker depth (six faces: its
+  // block's distance along the receiver's ray).
+  float min_distance = light_distance(textureLod(u_min_depth, c.xy, 0.0).r) * pmchss_tap(r, vec2(0.0)).distance_scale;
+  float penumbra = pmchss_penumbra_from_blocker(receiver_light_distance(r), min_distance);
 #endif
   return clamp(pmchss_filter(u_shadow_cmp, r, penumbra, phi), 0.0, 1.0);
 }
