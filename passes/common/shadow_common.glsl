@@ -61,6 +61,15 @@ void direction_basis(vec3 d, out vec3 tangent, out vec3 bitangent) {
   bitangent = cross(d, tangent);
 }
 
+// A distance from the light along the view's axis (light_distance() of a depth read through
+// shadow_coord(world)) times this is the distance along the ray to `world`: 1 for one view; for
+// six faces, 1 / the major component of the unit direction (a face's depth is along its axis).
+float axis_to_ray_scale(vec3 world) {
+  if (u_light_faces == 1) return 1.0;
+  vec3 a = abs(normalize(world - u_light_pos));
+  return 1.0 / max(max(a.x, a.y), a.z);
+}
+
 // Light size expressed in shadow-map UV at light distance `d` (world units). For an ortho map
 // the UV scale does not depend on distance; for a perspective map a world size at distance d
 // covers size / (d * frustum width at distance 1) of the map.

@@ -10,7 +10,7 @@
 namespace penumbra::passes {
 namespace {
 
-const char* kSixFaceTechniques = "hard, pcf, pcss, pmchss and esm";
+const char* kSixFaceTechniques = "hard, pcf, pcss, pmchss, mpg and esm";
 
 scene::Bounds frame_bounds(const exec::FrameInputs& frame) {
   return frame.scene ? frame.scene->cpu().bounds : scene::Bounds{};

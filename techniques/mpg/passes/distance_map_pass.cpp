@@ -51,7 +51,7 @@ class DistanceMapPass final : public exec::PassImpl {
     ctx.bind_image(1, "kernel_shape", GL_WRITE_ONLY);
     const gl::Program& prog = p.program();
     const exec::FrameInputs& frame = ctx.frame();
-    if (Status s = passes::set_shadow_uniforms(prog, frame); !s) return s;
+    if (Status s = passes::set_shadow_uniforms(prog, frame, passes::SixFaces::read); !s) return s;
     prog.set("u_depth_bias", ctx.real("depth_bias"));
     prog.set("u_distance_power", ctx.real("distance_power"));
     prog.set("u_distance_multiplier", ctx.real("distance_multiplier"));

@@ -35,6 +35,10 @@
 // SHADOW_TEST 2 (footprint, physical mapping) prefilters S in light space up to a pixel's
 // footprint; the screen-space passes then add only the variance S does not yet carry.
 //
+// A point light's six faces (shadow_common.glsl): S from the texels of the receiver's own face
+// (its guard band holds the 2 x 2 footprint), the footprint prefilter's taps placed by direction
+// (shadow_tap), every distance taken along the ray from the light.
+//
 // Written per pixel (layout in mpg_common.glsl): background (0, 0, 0, 0); lit or outside the
 // shadow map (0, 0, z, 0); receiver facing away from the light (1, 0, z, 0): its own umbra,
 // never filtered (the reference counts such receivers as fully shadowed); shadowed (S, D, z, 0).
@@ -112,8 +116,9 @@ float hard_shadow(vec3 c, out float blocker) {
 // SHADOW_TEST 2: S prefiltered in the shadow map by a Gaussian of spread sigma_uv: 5 x 5 bilinear
 // comparisons h sigma apart with weights exp(-k^2 / 2), k = -2..2, whose per-axis variance is
 // 0.9235 h^2 sigma^2, so h = 1.0406; each compared against the receiver plane (Isidoro 2006,
-// receiver_plane.glsl). `blockers` counts the taps that found a blocker, `blocker` is their mean
-// window depth.
+// receiver_plane.glsl; shadow_tap places each tap, by direction for six faces). `blockers` counts
+// the taps that found a blocker, `blocker` is the distance from the light of their mean window
+// depth (six faces: their mean distance along the taps' rays; a face's depths are its own).
 float prefiltered_shadow(Receiver r, float sigma_uv, out float blocker, out float blockers) {
   const float weight[5] = float[](0.1353, 0.6065, 1.0, 0.6065, 0.1353);
   const float h = 1.0406;
@@ -124,15 +129,19 @@ float prefiltered_shadow(Receiver r, float sigma_uv, out float blocker, out floa
   for (int j = 0; j < 5; ++j)
     for (int i = 0; i < 5; ++i) {
       float b;
-      vec2 o = h * sigma_uv * vec2(i - 2, j - 2);
-      float t = hard_shadow(vec3(r.coord.xy + o, receiver_depth_at(r, o, 0.0)), b);
+      ShadowTap tap = shadow_tap(r, h * sigma_uv * vec2(i - 2, j - 2), 0.0);
+      float t = hard_shadow(vec3(tap.uv, tap.ref), b);
       float w = weight[i] * weight[j];
       s += w * t;
       sum += w;
       all_shadowed = all_shadowed && t >= 1.0;
-      if (t > 0.0) { blocker += b; blockers += 1.0; }
+      if (t > 0.0) {
+        blocker += u_light_faces == 1 ? b : light_distance(b) * tap.distance_scale;
+        blockers += 1.0;
+      }
     }
   blocker /= max(blockers, 1.0);
+  if (u_light_faces == 1) blocker = light_distance(blocker);
   return all_shadowed ? 1.0 : s / sum;
 }
 
@@ -181,25 +190,30 @@ float write_distance(ivec2 p) {
       // pixel centres, so S is the shadow map filtered in light space by a Gaussian of the
       // penumbra's own spread, at most u_footprint_spread pixels; the blockers found by the
       // widest one set that spread, and D asks the screen-space passes for the rest.
-      float d_r = light_distance(c.z), blockers;
       Receiver r;
       r.coord = c;
-      r.dz_duv = receiver_depth_gradient(u_depth, p, pos.xyz, n, c);
+      r.world = pos.xyz;
+      r.normal = n;
+      r.dz_duv = vec2(0.0);
+      add_receiver_plane(u_depth, p, r);
+      float d_r = receiver_light_distance(r), blockers;
       float px_per_uv = shape.pixels_per_world * world_per_uv(d_r);
       float cap_uv = u_footprint_spread / px_per_uv;
       value.r = prefiltered_shadow(r, cap_uv, blocker, blockers);
       if (blockers > 0.0) {
-        float spread_uv = 0.25 * penumbra_width_uv(d_r, light_distance(blocker)) * u_light_size_scale;
+        float spread_uv = 0.25 * penumbra_width_uv(d_r, blocker) * u_light_size_scale;
         float pre_uv = min(spread_uv, cap_uv);
         // Shadowed across the widest footprint: the narrower one lies inside it.
         if (pre_uv < cap_uv && value.r < 1.0) value.r = prefiltered_shadow(r, pre_uv, blocker, blockers);
         if (blockers > 0.0)
-          value.g = filter_control(d_r, light_distance(blocker), shape.pixels_per_world, pre_uv * px_per_uv);
+          value.g = filter_control(d_r, blocker, shape.pixels_per_world, pre_uv * px_per_uv);
       }
 #else
       value.r = hard_shadow(c, blocker);
+      float to_ray = axis_to_ray_scale(pos.xyz);  // six faces: distances along the receiver's ray
       if (value.r > 0.0)
-        value.g = filter_control(light_distance(c.z), light_distance(blocker), shape.pixels_per_world, 0.0);
+        value.g = filter_control(light_distance(c.z) * to_ray, light_distance(blocker) * to_ray,
+                                 shape.pixels_per_world, 0.0);
 #endif
     }
   }
