@@ -34,7 +34,7 @@ namespace {
 constexpr float kHeatMapScale = 0.25f;
 
 const std::vector<OptionSpec> kSpecs = with_scene_options({
-    {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
+    scene_name_option(),
     {"techniques", true, false, "a,b:k=v,...", "techniques to evaluate, each with settings of its own (pmchss:variant=regular:k=2)"},
     {"reference", true, false, "raytraced|raster", "ground truth method (default raytraced)"},
     {"size", true, false, "WxH", "image size in pixels (default 640x360)"},

@@ -18,7 +18,7 @@ namespace penumbra::cli {
 namespace {
 
 const std::vector<OptionSpec> kSpecs = with_scene_options({
-    {"scene", true, false, "NAME|FILE", "built-in scene (fence, ball, poles, colonnade, palms, showcase) or .gltf/.glb"},
+    scene_name_option(),
     {"technique", true, false, "T", "technique name (default pcss if registered, else the first); see 'penumbra techniques'"},
     {"set", true, true, kAssignmentValueName, "set a technique parameter"},
     {"size", true, false, "WxH", "image size in pixels (default 640x360)"},

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "scene/builtin_scenes.h"
 #include "scene/load_scene.h"
 
 namespace penumbra::cli {
@@ -18,6 +19,13 @@ std::string vec3_text(const glm::vec3& v) {
 }
 
 }  // namespace
+
+OptionSpec scene_name_option() {
+  std::string names;
+  for (const std::string& n : scene::builtin_scene_names()) names += (names.empty() ? "" : ", ") + n;
+  return {"scene", true, false, "NAME[:k=v,...]|FILE",
+          "built-in scene (" + names + "), its parameters set after ':' (room:lamp_height=2), or .gltf/.glb"};
+}
 
 std::vector<OptionSpec> scene_option_specs() {
   return {

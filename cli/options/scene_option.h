@@ -24,6 +24,8 @@ struct SceneOptions {
   scene::StagingOptions staging;
 };
 
+// --scene NAME|FILE, its help naming the built-in scenes.
+OptionSpec scene_name_option();
 // --camera, --light-dir, --light-size, --ground, for a command's option table.
 std::vector<OptionSpec> scene_option_specs();
 std::vector<OptionSpec> with_scene_options(std::vector<OptionSpec> specs);

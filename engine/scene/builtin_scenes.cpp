@@ -1,7 +1,9 @@
 #include "scene/builtin_scenes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -153,6 +155,93 @@ void add_palms(SceneBuilder& b, const Params& p) {
   b.add(std::move(wall), b.material("wall", {0.85f, 0.85f, 0.8f}), glm::mat4(1.0f));
 }
 
+const std::vector<ProceduralParam> kRoomParams = {
+    {"room_width", 6.0f, "inside width (x), metres"},
+    {"room_depth", 5.0f, "inside depth (z), metres"},
+    {"room_height", 3.0f, "inside height (y), metres"},
+    {"lamp_height", 2.5f, "height of the lamp (the light's centre) above the floor, metres"},
+    {"light_size", 0.25f, "the lamp's diameter, metres"},
+    {"lamp_cone", 0.0f, "0: the lamp lights every direction (a point light); 1-89: a spot light "
+                        "pointing down with this half-angle, degrees (one shadow map, to compare with)"}};
+
+// The furniture needs a room of at least 3 x 3 m and 2.2 m high (the cabinet is 1.8 m tall, the
+// shelf at 2 m); the lamp hangs inside it, below the ceiling and above the floor by its radius.
+Status check_room(const Params& p) {
+  char text[200];
+  for (const char* key : {"room_width", "room_depth"}) {
+    if (p(key) >= 3.0f) continue;
+    std::snprintf(text, sizeof text, "%s %.3g m is below the smallest room that holds the furniture (3 m)", key, p(key));
+    return make_error(text);
+  }
+  if (p("room_height") < 2.2f) {
+    std::snprintf(text, sizeof text, "room_height %.3g m is below the smallest room that holds the furniture (2.2 m)",
+                  p("room_height"));
+    return make_error(text);
+  }
+  const float radius = 0.5f * p("light_size");
+  if (p("light_size") < 0.0f || p("light_size") > 1.0f) {
+    std::snprintf(text, sizeof text, "light_size %.3g m is outside [0, 1] m", p("light_size"));
+    return make_error(text);
+  }
+  if (p("lamp_cone") != 0.0f) {
+    if (Status s = check_spot_angle_degrees(p("lamp_cone")); !s) return make_error("lamp_cone: " + s.error().message);
+  }
+  if (p("lamp_height") - radius <= 0.0f || p("lamp_height") + radius >= p("room_height")) {
+    std::snprintf(text, sizeof text,
+                  "lamp_height %.3g m puts the lamp (radius %.3g m) outside the room (floor 0, ceiling %.3g m)",
+                  p("lamp_height"), radius, p("room_height"));
+    return make_error(text);
+  }
+  return {};
+}
+
+// A closed room lit by a lamp hanging from the ceiling: a table with a ball on it, a chair, a
+// tall cabinet against the back wall and a shelf on the side wall, so that casters stand at
+// several heights below the lamp and around it (issue: point lights inside the scene).
+void add_room(SceneBuilder& b, const Params& p) {
+  const float w = p("room_width"), d = p("room_depth"), h = p("room_height");
+  Mesh walls;
+  walls.name = "walls";
+  build::add_inside_box(walls, {0.0f, 0.5f * h, 0.0f}, {0.5f * w, 0.5f * h, 0.5f * d});
+  b.add(std::move(walls), b.material("walls", {0.78f, 0.76f, 0.72f}), glm::mat4(1.0f));
+  Mesh furniture;
+  furniture.name = "furniture";
+  const glm::vec3 table(0.5f, 0.0f, -0.5f);
+  build::add_box(furniture, table + glm::vec3(0.0f, 0.74f, 0.0f), {0.7f, 0.025f, 0.4f});
+  for (float sx : {-1.0f, 1.0f})
+    for (float sz : {-1.0f, 1.0f})
+      build::add_box(furniture, table + glm::vec3(0.64f * sx, 0.36f, 0.34f * sz), {0.025f, 0.36f, 0.025f});
+  const glm::vec3 chair(-0.6f, 0.0f, 0.1f);
+  build::add_box(furniture, chair + glm::vec3(0.0f, 0.45f, 0.0f), {0.22f, 0.02f, 0.22f});
+  build::add_box(furniture, chair + glm::vec3(-0.2f, 0.72f, 0.0f), {0.02f, 0.26f, 0.22f});
+  for (float sx : {-1.0f, 1.0f})
+    for (float sz : {-1.0f, 1.0f})
+      build::add_box(furniture, chair + glm::vec3(0.19f * sx, 0.215f, 0.19f * sz), {0.018f, 0.215f, 0.018f});
+  build::add_box(furniture, {-0.3f * w, 0.9f, -0.5f * d + 0.2f}, {0.6f, 0.9f, 0.18f});      // cabinet
+  build::add_box(furniture, {0.5f * w - 0.16f, 2.0f, 0.4f}, {0.15f, 0.02f, 0.55f});         // shelf
+  b.add(std::move(furniture), b.material("wood", {0.55f, 0.4f, 0.28f}), glm::mat4(1.0f));
+  Mesh ball;
+  ball.name = "ball";
+  build::add_sphere(ball, table + glm::vec3(-0.3f, 0.88f, 0.1f), 0.12f, 32, 16);
+  b.add(std::move(ball), b.material("ball", {0.8f, 0.25f, 0.2f}), glm::mat4(1.0f));
+  const glm::vec3 lamp(0.0f, p("lamp_height"), 0.0f);
+  const float cord_bottom = lamp.y + 0.5f * p("light_size") + 0.02f;
+  if (cord_bottom < h - 0.02f) {  // the lamp hangs from the ceiling by a cord above the light
+    Mesh cord;
+    cord.name = "cord";
+    build::add_cylinder(cord, {0.0f, cord_bottom, 0.0f}, {0.0f, h, 0.0f}, 0.008f, 8);
+    b.add(std::move(cord), b.material("cord", glm::vec3(0.1f)), glm::mat4(1.0f));
+  }
+  Light l;
+  l.type = p("lamp_cone") > 0.0f ? LightType::spot : LightType::point;
+  l.position = lamp;
+  l.direction = {0.0f, -1.0f, 0.0f};
+  l.spot_angle = glm::radians(p("lamp_cone"));
+  l.size = p("light_size");
+  b.scene.light = l;
+  b.scene.camera = Camera::look_at({-0.42f * w, 1.7f, 0.42f * d}, {0.4f, 0.5f, -0.6f}, glm::radians(70.0f));
+}
+
 const std::vector<ProceduralParam> kLightParams(float size, float elevation, float azimuth, float distance) {
   return {{"light_size", size, "emitter disk diameter, metres"},
           {"light_elevation", elevation, "light elevation above the horizon, degrees"},
@@ -164,6 +253,8 @@ struct BuiltinScene {
   std::string name;
   std::vector<ProceduralParam> params;
   std::function<void(SceneBuilder&, const Params&)> build;
+  // Parameters the geometry cannot be built from (none checked when empty).
+  std::function<Status(const Params&)> check;
 };
 
 std::vector<ProceduralParam> join(std::vector<ProceduralParam> a, const std::vector<ProceduralParam>& b) {
@@ -226,6 +317,7 @@ const std::vector<BuiltinScene>& registry() {
          b.scene.camera = Camera::look_at({3.5f, 5.5f, 7.5f}, {-0.2f, 0.6f, -0.6f});
          b.scene.light = sky_light(p, {0, 0, -0.5f});
        }},
+      {"room", kRoomParams, [](SceneBuilder& b, const Params& p) { add_room(b, p); }, check_room},
       {"showcase",
        join(join(join(join(kFenceParams, kBallParams), kPoleParams), kColonnadeParams),
             kLightParams(0.7f, 40.0f, 25.0f, 16.0f)),
@@ -280,6 +372,13 @@ Result<Scene> make_builtin_scene(const std::string& name, const ProceduralParams
     }
     SceneBuilder b;
     b.scene.name = name;
+    if (entry.check) {
+      if (Status s = entry.check(p); !s) {
+        Error e = s.error();
+        e.where = "scene " + name;
+        return e;
+      }
+    }
     entry.build(b, p);
     b.scene.bounds = compute_bounds(b.scene);
     const float extent = glm::length(b.scene.bounds.extent());

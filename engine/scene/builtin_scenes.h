@@ -10,6 +10,8 @@
 //              (Sterna 2018's views).
 //   palms      palm trees whose fronds are alpha-masked quads (Cherry & Kooima's Pool scene) and a
 //              low wall; `palm_height`, `frond_count`, `frond_length`.
+//   room       a closed room lit by a lamp (a point light inside the scene) hanging from the
+//              ceiling: table, ball, chair, cabinet and shelf; `lamp_height`, `light_size`.
 //   showcase   (default) all of the above on one ground.
 //
 //   Result<Scene> s = make_builtin_scene("ball", {{"ball_height", 1.5f}});

@@ -129,7 +129,11 @@ ShadowFrustum shadow_frustum(const Light& light, const Bounds& bounds_in) {
   } else {
     f.orthographic = false;
     f.far_plane = std::max(depth_max + depth_pad, 1e-2f);
-    f.near_plane = std::max(depth_min - depth_pad, 1e-3f * f.far_plane);
+    // A spot inside the scene (a lamp in a room) has geometry behind it, so the fitted near plane
+    // would fall to 1e-3 of the far one, where the hyperbolic depth makes a window-depth bias of
+    // 2e-4 some 0.3 m at 3 m. Nothing nearer the light's centre than its radius is a caster (it
+    // is inside the emitter): the near plane is at least that.
+    f.near_plane = std::max({depth_min - depth_pad, 1e-3f * f.far_plane, std::min(light.radius(), 0.5f * f.far_plane)});
     const float fov = std::clamp(2.0f * light.spot_angle, glm::radians(1.0f), glm::radians(170.0f));
     f.proj = glm::perspective(fov, 1.0f, f.near_plane, f.far_plane);
     f.width_world = 0.0f;

@@ -88,7 +88,7 @@ inline constexpr float kMaxPointFrustumHalfAngleDeg = 80.0f;
 
 // directional: orthographic, square, fitted to `bounds` as seen from the emitter plane, near/far
 // fitted to the bounds' depth range. spot: perspective with fov = 2 * spot_angle, near/far fitted
-// to the bounds' distance along `direction` (near >= 1e-3 x far). point: when the light is
+// to the bounds' distance along `direction` (near >= 1e-3 x far and >= the light's radius). point: when the light is
 // outside the bounds, a spot frustum from `position` towards the bounds' centre whose square
 // field of view just contains the bounds' corners (the light's `direction` is not used);
 // inside them (or with a half-angle above kMaxPointFrustumHalfAngleDeg), `six_faces`.

@@ -1,6 +1,7 @@
 #include "scene/mesh_builder.h"
 
 #include <cmath>
+#include <utility>
 
 namespace penumbra::scene::build {
 
@@ -42,6 +43,13 @@ void add_box(Mesh& m, const glm::vec3& c, const glm::vec3& h, const glm::mat3& r
       tri(m, a, d, e);
     }
   }
+}
+
+void add_inside_box(Mesh& m, const glm::vec3& c, const glm::vec3& h) {
+  const size_t first_vertex = m.vertices.size(), first_index = m.indices.size();
+  add_box(m, c, h);
+  for (size_t v = first_vertex; v < m.vertices.size(); ++v) m.vertices[v].normal = -m.vertices[v].normal;
+  for (size_t t = first_index; t < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
 }
 
 void add_sphere(Mesh& m, const glm::vec3& c, float radius, int slices, int stacks) {

@@ -46,7 +46,31 @@ TEST_P(MsmOnEveryScene, NearerTheTruthThanHardPcfAndPlainMsm) {
   EXPECT_LT(e_msm, e_plain) << "the blockers' height sizes the filter better than one width for all";
 }
 
-INSTANTIATE_TEST_SUITE_P(BuiltinScenes, MsmOnEveryScene, ::testing::ValuesIn(penumbra::scene::builtin_scene_names()));
+// The built-in scenes one moment map holds: the room's lamp needs six faces, which msm refuses
+// (MsmRefusesAPointLightInsideTheScene).
+std::vector<std::string> one_map_scenes() {
+  std::vector<std::string> names;
+  for (const std::string& name : penumbra::scene::builtin_scene_names()) {
+    const penumbra::scene::Scene s = builtin_scene(name);
+    if (!penumbra::scene::shadow_frustum(s.light, s.bounds).six_faces) names.push_back(name);
+  }
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, MsmOnEveryScene, ::testing::ValuesIn(one_map_scenes()));
+
+// Its moments are a light-view pass's colour target: a frame whose light needs six faces is a
+// bad-input Error naming the techniques that take it, not a moment map of one face.
+TEST(Msm, RefusesAPointLightInsideTheScene) {
+  TechniqueRig rig = make_rig();
+  rig.set_scene(builtin_scene("room"));
+  rig.use("msm");
+  penumbra::Status s = rig.try_render();
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().to_string().find("inside the scene bounds"), std::string::npos) << s.error().to_string();
+  EXPECT_NE(s.error().to_string().find("pcss"), std::string::npos) << s.error().to_string();
+  EXPECT_EQ(s.error().exit_code(), 2);
+}
 
 TEST(Msm, LitReceiversStayLitAndTheBallCastsAnUmbra) {
   TechniqueRig rig = make_rig();

@@ -113,6 +113,17 @@ float receiver_depth_at(Receiver r, vec2 offset_uv, float bias) {
 }
 
 
+// The shadow-map UV offset from the receiver of a world position: shadow_coord(world) -
+// r.coord for one view; for six faces, in the face-sized view centred on the receiver's direction
+// that shadow_tap() places offsets in (its inverse).
+vec2 shadow_offset_to(Receiver r, vec3 world) {
+  if (u_light_faces == 1) return shadow_coord(world).xy - r.coord.xy;
+  vec3 w0 = normalize(r.world - u_light_pos), tx, ty;
+  direction_basis(w0, tx, ty);
+  vec3 w = world - u_light_pos;
+  return vec2(dot(w, tx), dot(w, ty)) / (max(dot(w, w0), 1e-6) * u_light_frustum_width);
+}
+
 // Where a filter tap reads the map, and what it compares there.
 struct ShadowTap {
   vec2 uv;              // map UV

@@ -4,8 +4,9 @@
 // The map holds one view of the light (u_light_faces = 1: directional, spot, a point light
 // outside the scene) or the six faces of a point light inside the scene (u_light_faces = 6,
 // scene/light_faces.h), each a tile of the map seen through its own perspective frustum; then
-// near/far are every face's planes (a depth is the distance along the face's axis),
-// u_light_frustum_width is a face's and u_shadow_texel one texel of a face in face UV.
+// near/far are every face's planes, a depth is the distance along the face's axis, linear
+// between them as a directional light's is (shadow_map.frag.glsl says why), u_light_frustum_width
+// is a face's and u_shadow_texel one texel of a face in face UV.
 #include "light_faces.glsl"
 uniform int u_light_faces;        // 1 or 6
 uniform mat4 u_light_face_view_proj[6];  // six faces: world -> clip of each face
@@ -27,14 +28,14 @@ uniform float u_light_emitter_distance; // directional: emitter plane to scene c
 uniform float u_blocker_height_scale; // the scene's height along the light's rays, world units
                                       // (scene::blocker_height_scale; 1 without a scene)
 
-// (map uv, window depth) of a world position seen through face `face` of six; outside [0, 1]
-// at the light itself.
+// (map uv, depth) of a world position seen through face `face` of six, the depth linear in the
+// distance along the face's axis (clip w); outside [0, 1] at the light itself.
 vec3 face_shadow_coord(int face, vec3 world) {
   vec4 clip = u_light_face_view_proj[face] * vec4(world, 1.0);
   if (clip.w <= 0.0) return vec3(-1.0);
-  vec3 ndc = clip.xyz / clip.w;
+  vec2 ndc = clip.xy / clip.w;
   vec4 rect = u_light_face_rect[face];
-  return vec3(rect.xy + (ndc.xy * 0.5 + 0.5) * rect.z, ndc.z * 0.5 + 0.5);
+  return vec3(rect.xy + (ndc * 0.5 + 0.5) * rect.z, (clip.w - u_light_near) / (u_light_far - u_light_near));
 }
 
 // (shadow-map uv in [0,1], window depth in [0,1]) of a world position: six faces, through the
@@ -50,7 +51,7 @@ vec3 shadow_coord(vec3 world) {
 // axis for spot and for each of six faces) of a window depth read from the shadow map.
 float light_distance(float window_depth) {
   float z = window_depth * 2.0 - 1.0;
-  if (u_light_ortho == 1) return u_light_near + window_depth * (u_light_far - u_light_near);
+  if (u_light_ortho == 1 || u_light_faces != 1) return u_light_near + window_depth * (u_light_far - u_light_near);
   return 2.0 * u_light_near * u_light_far / (u_light_far + u_light_near - z * (u_light_far - u_light_near));
 }
 
@@ -68,6 +69,12 @@ float axis_to_ray_scale(vec3 world) {
   if (u_light_faces == 1) return 1.0;
   vec3 a = abs(normalize(world - u_light_pos));
   return 1.0 / max(max(a.x, a.y), a.z);
+}
+
+// Distance from the light (world units) of a world position in the sense of light_distance():
+// along the one view's axis, or for six faces along the ray from the light.
+float light_distance_of(vec3 world) {
+  return u_light_faces == 1 ? light_distance(shadow_coord(world).z) : length(world - u_light_pos);
 }
 
 // Light size expressed in shadow-map UV at light distance `d` (world units). For an ortho map

@@ -10,7 +10,8 @@
 namespace penumbra::passes {
 namespace {
 
-const char* kSixFaceTechniques = "hard, pcf, pcss, pmchss, mpg and esm";
+// Every built-in technique; a plugin pass that refuses is told which do.
+const char* kSixFaceTechniques = "hard, pcf, pcss, pmchss, mpg, sspcss and esm";
 
 scene::Bounds frame_bounds(const exec::FrameInputs& frame) {
   return frame.scene ? frame.scene->cpu().bounds : scene::Bounds{};

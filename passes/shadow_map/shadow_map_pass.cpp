@@ -27,8 +27,10 @@ class LightViewPass final : public exec::PassImpl {
   }
 
   Status execute(exec::PassContext& ctx) override {
-    gl::ShaderProgram& p =
-        ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl", .fragment = spec_.fragment_shader});
+    const exec::FrameInputs& frame = ctx.frame();
+    gl::ShaderSources sources{.vertex = "passes/shadow_map/shadow_map.vert.glsl", .fragment = spec_.fragment_shader};
+    if (frame.shadow.six_faces) sources.defines.push_back({"LINEAR_FACE_DEPTH", "1"});  // shadow_map.frag.glsl
+    gl::ShaderProgram& p = ctx.program(sources);
     if (!p.valid()) return *p.last_error();
     gl::Texture& depth = ctx.texture("depth");
     ids_.assign(1, depth.id());  // this frame's targets (no allocation after the first frame)
@@ -47,7 +49,6 @@ class LightViewPass final : public exec::PassImpl {
         glClearNamedFramebufferfv(fb_.id(), GL_COLOR, static_cast<GLint>(i), &clears_[i][0]);
       return {};
     }
-    const exec::FrameInputs& frame = ctx.frame();
     // A plugin's fragment shader may compute what the map's readers do (light_distance, say):
     // only the built-in depth map is read by techniques that know six faces.
     const SixFaces six_faces = spec_.colour_targets.empty() ? SixFaces::read : SixFaces::refused;
@@ -60,6 +61,8 @@ class LightViewPass final : public exec::PassImpl {
     }
     Result<scene::PointLightFaces> faces = scene::point_light_faces(frame.light, frame.scene->cpu().bounds, depth.width());
     if (!faces) return faces.error();
+    p.program().set("u_slope_bias", slope);  // the offset a written depth needs (shadow_map.frag.glsl)
+    p.program().set("u_constant_bias", constant);
     render_depth_faces(fb_, p.program(), *frame.scene, faces->faces, slope, constant, 0, clears_);
     return {};
   }

@@ -6,7 +6,7 @@
 #   scripts/report/run-suite.sh PENUMBRA_BINARY OUT_DIR [MODEL.gltf|glb ...]
 #   env: CONTEXT=egl (osmesa on a CPU), QUICK=1 (tiny sizes and frame counts: checks that the
 #        suite runs, on llvmpipe, in a minute; its numbers mean nothing),
-#        SCENES="fence ball" (the built-in scenes to run; default all six; models come as arguments),
+#        SCENES="fence ball" (the built-in scenes to run; default all seven; models come as arguments),
 #        COST=1|0|only (the cost sweep below: with the scenes, skipped, or alone). The device
 #        allows 10 minutes a command: run the suite in parts into one OUT_DIR.
 #
@@ -25,7 +25,7 @@ bin="${1:?usage: run-suite.sh PENUMBRA_BINARY OUT_DIR [MODEL.gltf ...]}"
 out="${2:?usage: run-suite.sh PENUMBRA_BINARY OUT_DIR [MODEL.gltf ...]}"
 shift 2
 context="${CONTEXT:-egl}"
-read -r -a scenes <<< "${SCENES-fence ball poles colonnade palms showcase}"
+read -r -a scenes <<< "${SCENES-fence ball poles colonnade palms room showcase}"
 scenes+=("$@")
 cost_part="${COST:-1}"
 [ "$cost_part" = only ] && scenes=()

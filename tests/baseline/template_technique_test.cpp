@@ -40,6 +40,21 @@ TEST(TemplateTechnique, CompilesAgainstThePassLibraryAndRenders) {
     EXPECT_GT(shadowed, 20u);
   }
   EXPECT_EQ(session.compile_count(), 1) << "a uniform parameter must not recompile";
+
+  // A point light inside the scene: the template's pass keeps set_shadow_uniforms' default
+  // (SixFaces::refused), so the frame is a bad-input Error naming the techniques that take it.
+  scene::Scene lamp = builtin_scene("ball");
+  lamp.light.type = scene::LightType::point;
+  lamp.light.position = {0.0f, 1.0f, 1.0f};
+  session.set_scene(lamp);
+  ASSERT_TRUE(session.set_technique("template"));
+  s = session.render();
+  ASSERT_FALSE(s);
+  const std::string msg = s.error().to_string();
+  EXPECT_NE(msg.find("inside the scene bounds"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("hard, pcf, pcss, pmchss, mpg, sspcss and esm"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("template_mask"), std::string::npos) << "the pass is named: " << msg;
+  EXPECT_EQ(s.error().exit_code(), 2);
 }
 
 }  // namespace

@@ -16,13 +16,10 @@ void add(scene::Scene& s, scene::Mesh m, uint32_t mat) {
   s.instances.push_back({static_cast<uint32_t>(s.meshes.size() - 1), glm::mat4(1.0f)});
 }
 
-// A box seen from inside: add_box's faces with their winding and normals turned inwards.
 scene::Mesh inside_box(const glm::vec3& half) {
   scene::Mesh m;
   m.name = "room";
-  scene::build::add_box(m, glm::vec3(0.0f), half);
-  for (scene::Vertex& v : m.vertices) v.normal = -v.normal;
-  for (size_t t = 0; t < m.indices.size(); t += 3) std::swap(m.indices[t + 1], m.indices[t + 2]);
+  scene::build::add_inside_box(m, glm::vec3(0.0f), half);
   return m;
 }
 

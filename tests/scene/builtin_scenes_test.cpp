@@ -11,7 +11,7 @@ using namespace penumbra;
 
 TEST(BuiltinScenes, EveryBuiltinBuildsWithinBudgetAndIsSeenByItsCamera) {
   const auto names = scene::builtin_scene_names();
-  ASSERT_EQ(names.size(), 6u);
+  ASSERT_EQ(names.size(), 7u);
   for (const std::string& name : names) {
     SCOPED_TRACE(name);
     Result<scene::Scene> s = scene::make_builtin_scene(name);
@@ -104,3 +104,57 @@ TEST(BuiltinScenes, PalmFrondsAreAlphaMaskedQuads) {
   EXPECT_GT(masked, 40);
   EXPECT_LT(masked + 40, solid);
 }
+
+// room: its lamp is a point light inside the room, so every shadow map holds six faces; the
+// parameters move the lamp and size it, and a room the furniture cannot stand in (a zero-size
+// one among them) or a lamp outside it is refused with the limit.
+TEST(BuiltinScenes, TheRoomIsLitByALampInsideIt) {
+  Result<scene::Scene> room = scene::make_builtin_scene("room");
+  ASSERT_TRUE(room) << room.error().to_string();
+  EXPECT_EQ(room->light.type, scene::LightType::point);
+  EXPECT_TRUE(scene::shadow_frustum(room->light, room->bounds).six_faces);
+  EXPECT_FLOAT_EQ(room->light.size, 0.25f);
+  Result<scene::Scene> low = scene::make_builtin_scene("room", {{"lamp_height", 1.5f}, {"light_size", 0.5f}});
+  ASSERT_TRUE(low);
+  EXPECT_FLOAT_EQ(low->light.position.y, 1.5f);
+  EXPECT_FLOAT_EQ(low->light.size, 0.5f);
+  Result<scene::Scene> spot = scene::make_builtin_scene("room", {{"lamp_cone", 60.0f}});  // one map, to compare
+  ASSERT_TRUE(spot);
+  EXPECT_EQ(spot->light.type, scene::LightType::spot);
+  EXPECT_FALSE(scene::shadow_frustum(spot->light, spot->bounds).six_faces);
+  const std::pair<scene::ProceduralParams, const char*> bad[] = {
+      {{{"room_width", 0.0f}}, "room_width 0 m is below the smallest room"},
+      {{{"room_depth", 2.0f}}, "room_depth 2 m"},
+      {{{"room_height", 0.0f}}, "room_height 0 m"},
+      {{{"lamp_height", 3.0f}}, "outside the room"},
+      {{{"lamp_height", 0.1f}}, "outside the room"},
+      {{{"light_size", -1.0f}}, "outside [0, 1]"},
+      {{{"lamp_cone", 95.0f}}, "lamp_cone: spot angle 95 degrees is outside [1, 89]"}};
+  for (const auto& [params, expected] : bad) {
+    Result<scene::Scene> s = scene::make_builtin_scene("room", params);
+    ASSERT_FALSE(s) << expected;
+    EXPECT_NE(s.error().to_string().find(expected), std::string::npos) << s.error().to_string();
+    EXPECT_NE(s.error().to_string().find("scene room"), std::string::npos) << s.error().to_string();
+  }
+}
+
+// load_scene (the CLI's --scene): a built-in's parameters after ':' as k=v,k=v; malformed or
+// unknown ones are errors naming what is wrong.
+TEST(BuiltinScenes, LoadSceneTakesParametersAfterAColon) {
+  Result<scene::Scene> s = scene::load_scene("room:lamp_height=1.8,light_size=0.4");
+  ASSERT_TRUE(s) << s.error().to_string();
+  EXPECT_FLOAT_EQ(s->light.position.y, 1.8f);
+  EXPECT_FLOAT_EQ(s->light.size, 0.4f);
+  const std::pair<const char*, const char*> bad[] = {{"room:lamp_height", "is not k=v"},
+                                                     {"room:lamp_height=high", "'high' for 'lamp_height'"},
+                                                     {"room:lamp_height=1e99", "is not finite"},
+                                                     {"room:", "is not k=v"},
+                                                     {"room:colour=1", "unknown parameter 'colour'"},
+                                                     {"hall:size=1", "neither a .gltf/.glb file nor a built-in"}};
+  for (const auto& [text, expected] : bad) {
+    Result<scene::Scene> r = scene::load_scene(text);
+    ASSERT_FALSE(r) << text;
+    EXPECT_NE(r.error().to_string().find(expected), std::string::npos) << text << ": " << r.error().to_string();
+  }
+}
+

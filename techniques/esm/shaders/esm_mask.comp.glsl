@@ -82,7 +82,7 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   int face = esm_face(world);
   vec4 c = esm_map_coord(face, world);
   if (c.w == 0.0 || c.z < 0.0 || c.z > 1.0) return 1.0;  // outside the map: lit
-  float z = c.z - u_depth_bias;
+  float z = esm_biased_depth(c.z, u_depth_bias);
   // The 2x2 texels around the receiver, clamped to its face's tile.
   vec4 rect = u_face_rect[face];
   vec2 st = c.xy - 0.5;

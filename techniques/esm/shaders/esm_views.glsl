@@ -32,5 +32,17 @@ float esm_light_distance(float window_depth) {
   return 2.0 * u_esm_near * u_esm_far / (u_esm_far + u_esm_near - z * (u_esm_far - u_esm_near));
 }
 
+// A receiver's window depth moved `bias` towards the light. The bias is in window depth units; a
+// point light's faces have their near plane at 1e-3 of the far one, where a window-depth step at
+// the far end is 1000x one at the near end (2e-4 would be 0.3 m at 3 m): there it means that
+// fraction of the depth range, (far - near) x bias, at any distance.
+float esm_biased_depth(float window_depth, float bias) {
+  if (u_face_count == 1) return window_depth - bias;
+  float d = esm_light_distance(window_depth) - bias * (u_esm_far - u_esm_near);
+  float n = u_esm_near, f = u_esm_far;
+  float ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * max(d, n));
+  return ndc * 0.5 + 0.5;
+}
+
 // World size of one texel at light distance d.
 float esm_texel_world(float d) { return u_esm_ortho == 1 ? u_esm_texel_scale : d * u_esm_texel_scale; }

@@ -25,7 +25,7 @@ class PreparePass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", raw_->id());
     ctx.bind_sampled(p, "u_shadow_cmp", "shadow_map", compare_->id());
     ctx.bind_image(0, "projected", GL_WRITE_ONLY);
-    if (Status s = passes::set_shadow_uniforms(p.program(), ctx.frame()); !s) return s;
+    if (Status s = passes::set_shadow_uniforms(p.program(), ctx.frame(), passes::SixFaces::read); !s) return s;
     p.program().set("u_depth_bias", ctx.real("depth_bias"));
     set_screen_uniforms(p.program(), ctx.frame());
     p.program().set("u_view_inverse", glm::inverse(ctx.frame().view()));

@@ -36,7 +36,7 @@ Status bind_common(const gl::ShaderProgram& p, exec::PassContext& ctx) {
   set_screen_uniforms(p.program(), ctx.frame());
   set_range_uniforms(p.program(), ctx);
   set_footprint_uniform(p.program(), ctx);
-  return passes::set_shadow_uniforms(p.program(), ctx.frame());
+  return passes::set_shadow_uniforms(p.program(), ctx.frame(), passes::SixFaces::read);
 }
 
 class FilterRowsPass final : public exec::PassImpl {

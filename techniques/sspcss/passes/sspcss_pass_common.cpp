@@ -71,7 +71,7 @@ void set_range_uniforms(const gl::Program& p, exec::PassContext& ctx) {
 }
 
 Status set_penumbra_uniforms(const gl::Program& p, exec::PassContext& ctx) {
-  if (Status s = passes::set_shadow_uniforms(p, ctx.frame()); !s) return s;
+  if (Status s = passes::set_shadow_uniforms(p, ctx.frame(), passes::SixFaces::read); !s) return s;
   p.set("u_light_size_scale", ctx.real("light_size_scale"));
   p.set("u_max_penumbra_px", ctx.real("max_penumbra_px"));
   return {};

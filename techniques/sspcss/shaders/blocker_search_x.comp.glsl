@@ -31,7 +31,7 @@ void main() {
     imageStore(u_rows, p, vec4(0.0));
     return;
   }
-  float d_receiver = light_distance(shadow_coord(pos.xyz).z);
+  float d_receiver = light_distance_of(pos.xyz);
   vec3 normal = gbuffer_normal(u_normal, p);
   mat2 footprint = receiver_footprint(p, pos.xyz, normal);
   float width = separable_kernel(footprint, search_width_px(d_receiver, pos.w, footprint)).width_x;

@@ -28,7 +28,7 @@ void main() {
   vec4 pos = gbuffer_position(u_depth, p);
   float blocker = 0.0, penumbra = 0.0;
   if (pos.w > 0.0) {
-    float d_receiver = light_distance(shadow_coord(pos.xyz).z);
+    float d_receiver = light_distance_of(pos.xyz);
     vec3 normal = gbuffer_normal(u_normal, p);
     mat2 footprint = receiver_footprint(p, pos.xyz, normal);
     SeparableKernel kernel = separable_kernel(footprint, search_width_px(d_receiver, pos.w, footprint));

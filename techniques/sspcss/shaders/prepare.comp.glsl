@@ -13,7 +13,8 @@
 //   b  linear view depth of the receiver (world units; 0 = background), the range term's input
 //   a  1 where the receiver faces away from the light (in its own shadow, mask 0), else 0
 // Background pixels and pixels outside the light frustum are lit. No NDC depth leaves this pass:
-// the shadow map's window depth is turned into a light distance here.
+// the shadow map's window depth is turned into a light distance here (a point light's six faces:
+// along the ray from the light, every sample placed by direction through shadow_tap()).
 #include "screen_pass.glsl"
 #include "common/shadow_common.glsl"
 #include "pcf_mask/shadow_taps.glsl"
@@ -45,7 +46,7 @@ vec2 tangent_plane_offset(vec2 pixel, vec3 n_view, float plane, float depth, Rec
   float t = n_dot_ray * plane > 0.0 ? plane / n_dot_ray : depth;
   t = clamp(t, 0.5 * depth, 2.0 * depth);  // never far from the pixel's own depth
   vec3 world = (u_view_inverse * vec4(t * ray, 1.0)).xyz;
-  return shadow_coord(world).xy - r.coord.xy;
+  return shadow_offset_to(r, world);
 }
 
 void main() {
@@ -76,23 +77,24 @@ void main() {
       float v = pcf_tap(u_shadow_cmp, r, offset, u_depth_bias);
       visibility += v / float(samples);
       if (v == 1.0) continue;
-      vec4 stored = textureGather(u_shadow_map, r.coord.xy + offset, 0);  // the tap's 2x2 texels
-      float limit = receiver_depth_at(r, offset, u_depth_bias);
+      ShadowTap tap = shadow_tap(r, offset, u_depth_bias);
+      vec4 stored = textureGather(u_shadow_map, tap.uv, 0);  // the tap's 2x2 texels
       for (int k = 0; k < 4; ++k)
-        if (stored[k] < limit) {
-          sum += light_distance(stored[k]);
+        if (stored[k] < tap.ref) {
+          sum += light_distance(stored[k]) * tap.distance_scale;
           count += 1.0;
         }
     }
     // The filtered comparison and the gather can disagree by rounding at a texel's edge:
     // then the receiver itself is the blocker (a contact, no penumbra).
-    if (visibility < 1.0) blocker = count > 0.0 ? sum / count : light_distance(r.coord.z);
+    if (visibility < 1.0) blocker = count > 0.0 ? sum / count : receiver_light_distance(r);
   }
   bool self_shadowed = faces_away_from_light(pos.xyz, normal);
   if (self_shadowed) {
     // Its own surface blocks the light: distance 0 from the receiver when the map has nothing
     // nearer (a contact, no penumbra).
-    if (visibility == 1.0) blocker = light_distance(clamp(shadow_coord(pos.xyz).z, 0.0, 1.0));
+    if (visibility == 1.0)
+      blocker = light_distance(clamp(shadow_coord(pos.xyz).z, 0.0, 1.0)) * axis_to_ray_scale(pos.xyz);
     visibility = 0.0;
   }
   imageStore(u_projected, p, vec4(visibility, blocker, pos.w, self_shadowed ? 1.0 : 0.0));
