@@ -71,7 +71,12 @@ std::string PassContext::enumeration(std::string_view name) const {
   return {};
 }
 
-gl::ShaderProgram& PassContext::program(const gl::ShaderSources& sources) { return shaders_.get(sources); }
+gl::ShaderProgram& PassContext::program(const gl::ShaderSources& sources) {
+  if (!frame().shadow.six_faces) return shaders_.get(sources);
+  gl::ShaderSources six = sources;  // the six-face variant (passes/common/shadow_common.glsl)
+  six.defines.push_back({"SIX_FACES", "1"});
+  return shaders_.get(six);
+}
 
 void PassContext::bind_sampled(const gl::ShaderProgram& p, const char* uniform, std::string_view slot,
                                GLuint sampler) {

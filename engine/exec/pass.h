@@ -63,7 +63,9 @@ class PassContext {
   float real(std::string_view name) const;
   std::string enumeration(std::string_view name) const;
 
-  // Programs are cached by sources+defines and hot-reloaded by the ShaderCache.
+  // Programs are cached by sources+defines and hot-reloaded by the ShaderCache. A frame whose
+  // light needs six faces (frame().shadow.six_faces) gets the variant with SIX_FACES defined
+  // (passes/common/shadow_common.glsl), so one-view frames compile none of that code.
   gl::ShaderProgram& program(const gl::ShaderSources& sources);
 
   // Binding helpers (texture units are allocated per call sequence within one pass).

@@ -84,7 +84,7 @@ int receiver_at(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r
 // The receiver plane of a receiver (only where taps will be taken: it reads the neighbours' depths).
 // Six faces need none: shadow_tap() meets the receiver's tangent plane along each tap's ray.
 void add_receiver_plane(sampler2D depths, ivec2 pixel, inout Receiver r) {
-  if (u_light_faces != 1) return;
+  if (kLightFaces != 1) return;
   r.dz_duv = receiver_depth_gradient(depths, pixel, r.world, r.normal, r.coord);
 }
 
@@ -92,7 +92,7 @@ void add_receiver_plane(sampler2D depths, ivec2 pixel, inout Receiver r) {
 // the one view's axis, or for six faces along the ray from the light, the axis of the view
 // centred on the receiver that shadow_tap() places its taps in.
 float receiver_light_distance(Receiver r) {
-  return u_light_faces == 1 ? light_distance(r.coord.z) : length(r.world - u_light_pos);
+  return kLightFaces == 1 ? light_distance(r.coord.z) : length(r.world - u_light_pos);
 }
 
 // Any receiver inside the shadow-map frustum, facing the light or not, with its plane; false for
@@ -117,7 +117,7 @@ float receiver_depth_at(Receiver r, vec2 offset_uv, float bias) {
 // r.coord for one view; for six faces, in the face-sized view centred on the receiver's direction
 // that shadow_tap() places offsets in (its inverse).
 vec2 shadow_offset_to(Receiver r, vec3 world) {
-  if (u_light_faces == 1) return shadow_coord(world).xy - r.coord.xy;
+  if (kLightFaces == 1) return shadow_coord(world).xy - r.coord.xy;
   vec3 w0 = normalize(r.world - u_light_pos), tx, ty;
   direction_basis(w0, tx, ty);
   vec3 w = world - u_light_pos;
@@ -142,7 +142,7 @@ struct ShadowTap {
 const float kMaxFractionalTexel = 0.05;
 ShadowTap shadow_tap(Receiver r, vec2 offset_uv, float bias) {
   ShadowTap t;
-  if (u_light_faces == 1) {
+  if (kLightFaces == 1) {
     t.uv = r.coord.xy + offset_uv;
     t.ref = receiver_depth_at(r, offset_uv, bias);
     t.distance_scale = 1.0;

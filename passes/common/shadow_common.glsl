@@ -1,14 +1,21 @@
 // Light-space helpers shared by every pass that reads a shadow map. The C++ side sets these
 // uniforms with set_shadow_uniforms() (passes/common/shadow_uniforms.h).
 //
-// The map holds one view of the light (u_light_faces = 1: directional, spot, a point light
-// outside the scene) or the six faces of a point light inside the scene (u_light_faces = 6,
+// The map holds one view of the light (kLightFaces = 1: directional, spot, a point light
+// outside the scene) or the six faces of a point light inside the scene (kLightFaces = 6,
 // scene/light_faces.h), each a tile of the map seen through its own perspective frustum; then
 // near/far are every face's planes, a depth is the distance along the face's axis, linear
 // between them as a directional light's is (shadow_map.frag.glsl says why), u_light_frustum_width
 // is a face's and u_shadow_texel one texel of a face in face UV.
 #include "light_faces.glsl"
-uniform int u_light_faces;        // 1 or 6
+// Six faces are a compile-time variant: PassContext::program() defines SIX_FACES for a frame
+// whose light needs them, so a one-view frame runs none of their code (one-view filters measured
+// 8-16 % slower with the choice made at run time, H100).
+#ifdef SIX_FACES
+const int kLightFaces = 6;
+#else
+const int kLightFaces = 1;
+#endif
 uniform mat4 u_light_face_view_proj[6];  // six faces: world -> clip of each face
 uniform vec4 u_light_face_rect[6];       // six faces: tile origin (xy) and side (z), map UV
 uniform mat4 u_light_view_proj;   // world -> light clip space
@@ -41,7 +48,7 @@ vec3 face_shadow_coord(int face, vec3 world) {
 // (shadow-map uv in [0,1], window depth in [0,1]) of a world position: six faces, through the
 // face of its direction from the light.
 vec3 shadow_coord(vec3 world) {
-  if (u_light_faces == 6) return face_shadow_coord(light_face(world - u_light_pos), world);
+  if (kLightFaces == 6) return face_shadow_coord(light_face(world - u_light_pos), world);
   vec4 clip = u_light_view_proj * vec4(world, 1.0);
   vec3 ndc = clip.xyz / clip.w;
   return ndc * 0.5 + 0.5;
@@ -51,7 +58,7 @@ vec3 shadow_coord(vec3 world) {
 // axis for spot and for each of six faces) of a window depth read from the shadow map.
 float light_distance(float window_depth) {
   float z = window_depth * 2.0 - 1.0;
-  if (u_light_ortho == 1 || u_light_faces != 1) return u_light_near + window_depth * (u_light_far - u_light_near);
+  if (u_light_ortho == 1 || kLightFaces != 1) return u_light_near + window_depth * (u_light_far - u_light_near);
   return 2.0 * u_light_near * u_light_far / (u_light_far + u_light_near - z * (u_light_far - u_light_near));
 }
 
@@ -66,7 +73,7 @@ void direction_basis(vec3 d, out vec3 tangent, out vec3 bitangent) {
 // shadow_coord(world)) times this is the distance along the ray to `world`: 1 for one view; for
 // six faces, 1 / the major component of the unit direction (a face's depth is along its axis).
 float axis_to_ray_scale(vec3 world) {
-  if (u_light_faces == 1) return 1.0;
+  if (kLightFaces == 1) return 1.0;
   vec3 a = abs(normalize(world - u_light_pos));
   return 1.0 / max(max(a.x, a.y), a.z);
 }
@@ -74,7 +81,7 @@ float axis_to_ray_scale(vec3 world) {
 // Distance from the light (world units) of a world position in the sense of light_distance():
 // along the one view's axis, or for six faces along the ray from the light.
 float light_distance_of(vec3 world) {
-  return u_light_faces == 1 ? light_distance(shadow_coord(world).z) : length(world - u_light_pos);
+  return kLightFaces == 1 ? light_distance(shadow_coord(world).z) : length(world - u_light_pos);
 }
 
 // Light size expressed in shadow-map UV at light distance `d` (world units). For an ortho map

@@ -31,7 +31,6 @@ Status set_face_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
     p.set(matrix.c_str(), f.view_proj);
     p.set(rect.c_str(), glm::vec4(glm::vec2(f.origin) / map, static_cast<float>(f.size) / map, 0.0f));
   }
-  p.set("u_light_faces", 6);
   p.set("u_light_near", faces->near_plane);
   p.set("u_light_far", faces->far_plane);
   p.set("u_light_ortho", 0);
@@ -58,7 +57,6 @@ Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame,
                         ErrorKind::bad_input);
     return set_face_uniforms(p, frame);
   }
-  p.set("u_light_faces", 1);
   p.set("u_light_view_proj", s.view_proj);
   p.set("u_light_view", s.view);
   p.set("u_light_near", s.near_plane);

@@ -36,7 +36,7 @@ void main() {
     vec2 size = vec2(textureSize(u_shadow_map, 0));
     float sum = 0.0;
 #if PCF_KERNEL_BOX
-    if (u_light_faces != 1) {
+    if (kLightFaces != 1) {
       // Six faces: the same N x N bilinear taps one (face) texel apart, each placed by its own
       // direction (shadow_tap), since a gather's 2 x 2 block may straddle two faces' tiles.
       int h = u_box_size / 2;
@@ -64,7 +64,7 @@ void main() {
       lit = sum / total;  // exactly 1 where all pass, 0 where none does
     }
 #else
-    vec2 texel = u_light_faces == 1 ? 1.0 / size : vec2(u_shadow_texel);  // six faces: one face texel
+    vec2 texel = kLightFaces == 1 ? 1.0 / size : vec2(u_shadow_texel);  // six faces: one face texel
     float phi = noise_rotation(vec2(p));
     for (int i = 0; i < u_samples; ++i) {
       vec2 o = vogel_disk_sample(i, u_samples, phi) * u_radius * texel;

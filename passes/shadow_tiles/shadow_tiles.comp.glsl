@@ -91,7 +91,7 @@ void main() {
 
   // A point light's six faces: one plane per block cannot bound taps that may read another face's
   // tile, so a tile with a receiver to filter is penumbra.
-  if (s_first == 0xffffffffu || u_light_faces != 1) {  // no receiver: the kinds above decide
+  if (s_first == 0xffffffffu || kLightFaces != 1) {  // no receiver: the kinds above decide
     if (i == 0u) {
       if (s_first != 0xffffffffu) s_all_lit = s_all_umbra = false;
       float tile_class = s_all_lit ? TILE_LIT : s_all_umbra ? TILE_UMBRA : TILE_PENUMBRA;

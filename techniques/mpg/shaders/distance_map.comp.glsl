@@ -136,12 +136,12 @@ float prefiltered_shadow(Receiver r, float sigma_uv, out float blocker, out floa
       sum += w;
       all_shadowed = all_shadowed && t >= 1.0;
       if (t > 0.0) {
-        blocker += u_light_faces == 1 ? b : light_distance(b) * tap.distance_scale;
+        blocker += kLightFaces == 1 ? b : light_distance(b) * tap.distance_scale;
         blockers += 1.0;
       }
     }
   blocker /= max(blockers, 1.0);
-  if (u_light_faces == 1) blocker = light_distance(blocker);
+  if (kLightFaces == 1) blocker = light_distance(blocker);
   return all_shadowed ? 1.0 : s / sum;
 }
 

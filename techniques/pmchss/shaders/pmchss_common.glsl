@@ -76,11 +76,11 @@ float pmchss_blocker_search(sampler2D shadow_map, Receiver r, int n, float phi, 
     // One view averages window depths as Listing 3 does (k was calibrated so); six faces' window
     // depths belong to different faces, so their distances along the rays are averaged.
     if (d < t.ref) {
-      sum += u_light_faces == 1 ? d : light_distance(d) * t.distance_scale;
+      sum += kLightFaces == 1 ? d : light_distance(d) * t.distance_scale;
       count += 1.0;
     }
   }
-  if (count > 0.0 && u_light_faces == 1) sum = light_distance(sum / count) * count;
+  if (count > 0.0 && kLightFaces == 1) sum = light_distance(sum / count) * count;
   avg_distance = count > 0.0 ? sum / count : u_light_far;
   return count;
 }
