@@ -22,6 +22,14 @@
 
 namespace penumbra::gl {
 
+// The name of element `index` of a uniform array: "u_faces[3]". (Appended piece by piece: GCC 12
+// warns falsely (-Wrestrict) on `name + "[" + std::to_string(index)`.)
+inline std::string uniform_element(const char* array, int index) {
+  std::string name(array);
+  name.append("[").append(std::to_string(index)).append("]");
+  return name;
+}
+
 class Program {
  public:
   Program() = default;

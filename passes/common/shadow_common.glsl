@@ -9,8 +9,9 @@
 // is a face's and u_shadow_texel one texel of a face in face UV.
 #include "light_faces.glsl"
 // Six faces are a compile-time variant: PassContext::program() defines SIX_FACES for a frame
-// whose light needs them, so a one-view frame runs none of their code (one-view filters measured
-// 8-16 % slower with the choice made at run time, H100).
+// whose light needs them, so a one-view frame runs none of their code. With the choice made at
+// run time (a uniform) the one-view filters took 8-16 % longer in the results suite (H100);
+// compiled apart, their time is that of the commit before six faces (docs/techniques.md).
 #ifdef SIX_FACES
 const int kLightFaces = 6;
 #else

@@ -23,13 +23,10 @@ Status set_face_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
   if (!faces) return faces.error();
   const float map = static_cast<float>(frame.shadow_size);
   for (int i = 0; i < 6; ++i) {
-    // (Appending, not "[" + to_string(i): GCC 12 warns falsely (-Wrestrict) on that form.)
-    std::string matrix = "u_light_face_view_proj[", rect = "u_light_face_rect[";
-    matrix.append(std::to_string(i)).append("]");
-    rect.append(std::to_string(i)).append("]");
     const scene::LightFace& f = faces->faces[i];
-    p.set(matrix.c_str(), f.view_proj);
-    p.set(rect.c_str(), glm::vec4(glm::vec2(f.origin) / map, static_cast<float>(f.size) / map, 0.0f));
+    p.set(gl::uniform_element("u_light_face_view_proj", i).c_str(), f.view_proj);
+    p.set(gl::uniform_element("u_light_face_rect", i).c_str(),
+          glm::vec4(glm::vec2(f.origin) / map, static_cast<float>(f.size) / map, 0.0f));
   }
   p.set("u_light_near", faces->near_plane);
   p.set("u_light_far", faces->far_plane);

@@ -9,6 +9,25 @@
 
 using namespace penumbra;
 
+namespace {
+
+// The box |x|, |y|, |z| <= half.
+scene::Bounds cube(float half) {
+  scene::Bounds b;
+  b.extend(glm::vec3(-half));
+  b.extend(glm::vec3(half));
+  return b;
+}
+
+scene::Light light(scene::LightType type, const glm::vec3& position) {
+  scene::Light l;
+  l.type = type;
+  l.position = position;
+  return l;
+}
+
+}  // namespace
+
 TEST(LightSamples, OnTheEmitterDiskStratifiedAndDeterministic) {
   scene::Light l;
   l.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
@@ -87,12 +106,8 @@ TEST(ShadowFrustum, PointLightOutsideBoundsIsAFittedSpotInsideHasSixFaces) {
 }
 
 TEST(ShadowFrustum, SpotFrustumReportsItsHalfAngle) {
-  scene::Bounds b;
-  b.extend(glm::vec3(-1.0f));
-  b.extend(glm::vec3(1.0f));
-  scene::Light l;
-  l.type = scene::LightType::spot;
-  l.position = {0, 6, 0};
+  const scene::Bounds b = cube(1.0f);
+  scene::Light l = light(scene::LightType::spot, {0, 6, 0});
   l.spot_angle = glm::radians(30.0f);
   const scene::ShadowFrustum f = scene::shadow_frustum(l, b);
   EXPECT_NEAR(f.tan_half_fov, std::tan(glm::radians(30.0f)), 1e-5f);
@@ -138,12 +153,8 @@ TEST(BlockerHeightScale, TheScenesHeightAlongTheLightsRays) {
 // The six faces cover every direction: each direction projects inside its own face's tile at
 // least kFaceGuardTexels from the tile's edges, and the faces' tiles do not overlap.
 TEST(PointLightFaces, EveryDirectionLandsInsideItsFaceTileWithTheGuardBand) {
-  scene::Bounds b;
-  b.extend(glm::vec3(-4.0f));
-  b.extend(glm::vec3(4.0f));
-  scene::Light l;
-  l.type = scene::LightType::point;
-  l.position = {0.5f, -1.0f, 0.3f};
+  const scene::Bounds b = cube(4.0f);
+  const scene::Light l = light(scene::LightType::point, {0.5f, -1.0f, 0.3f});
   const int map = 300;
   Result<scene::PointLightFaces> faces = scene::point_light_faces(l, b, map);
   ASSERT_TRUE(faces) << faces.error().to_string();
@@ -170,9 +181,7 @@ TEST(PointLightFaces, EveryDirectionLandsInsideItsFaceTileWithTheGuardBand) {
 }
 
 TEST(PointLightFaces, AMapTooSmallForSixFacesIsAnErrorNamingBothSizes) {
-  scene::Light l;
-  l.type = scene::LightType::point;
-  Result<scene::PointLightFaces> faces = scene::point_light_faces(l, {}, 40);
+  Result<scene::PointLightFaces> faces = scene::point_light_faces(light(scene::LightType::point, {}), {}, 40);
   ASSERT_FALSE(faces);
   EXPECT_NE(faces.error().message.find("48"), std::string::npos) << faces.error().message;
   EXPECT_NE(faces.error().message.find("40"), std::string::npos) << faces.error().message;

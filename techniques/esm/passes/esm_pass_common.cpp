@@ -13,15 +13,10 @@ Result<EsmViews> frame_views(const exec::PassContext& ctx, int map_size) {
 }
 
 void set_view_uniforms(const gl::Program& p, const EsmViews& v) {
-  const GLuint id = p.id();
-  for (size_t i = 0; i < v.faces.size(); ++i) {
-    // (Appending, not "[" + to_string(i): GCC 12 warns falsely (-Wrestrict) on that form.)
-    std::string matrix = "u_face_view_proj[", rect_name = "u_face_rect[";
-    matrix.append(std::to_string(i)).append("]");
-    rect_name.append(std::to_string(i)).append("]");
-    glProgramUniformMatrix4fv(id, p.uniform_location(matrix.c_str()), 1, GL_FALSE, &v.faces[i].view_proj[0][0]);
-    const glm::vec4 rect(glm::vec2(v.faces[i].origin), static_cast<float>(v.faces[i].size), 0.0f);
-    glProgramUniform4fv(id, p.uniform_location(rect_name.c_str()), 1, &rect[0]);
+  for (int i = 0; i < static_cast<int>(v.faces.size()); ++i) {
+    const EsmFace& f = v.faces[static_cast<size_t>(i)];
+    p.set(gl::uniform_element("u_face_view_proj", i).c_str(), f.view_proj);
+    p.set(gl::uniform_element("u_face_rect", i).c_str(), glm::vec4(glm::vec2(f.origin), static_cast<float>(f.size), 0.0f));
   }
   p.set("u_face_count", static_cast<int>(v.faces.size()));
   p.set("u_esm_light", v.light);
