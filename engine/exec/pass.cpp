@@ -72,7 +72,8 @@ std::string PassContext::enumeration(std::string_view name) const {
 }
 
 gl::ShaderProgram& PassContext::program(const gl::ShaderSources& sources) {
-  if (!frame().shadow.six_faces) return shaders_.get(sources);
+  const bool defined = std::ranges::any_of(sources.defines, [](const auto& d) { return d.first == "SIX_FACES"; });
+  if (!frame().shadow.six_faces || defined) return shaders_.get(sources);
   gl::ShaderSources six = sources;  // the six-face variant (passes/common/shadow_common.glsl)
   six.defines.push_back({"SIX_FACES", "1"});
   return shaders_.get(six);

@@ -65,7 +65,8 @@ class PassContext {
 
   // Programs are cached by sources+defines and hot-reloaded by the ShaderCache. A frame whose
   // light needs six faces (frame().shadow.six_faces) gets the variant with SIX_FACES defined
-  // (passes/common/shadow_common.glsl), so one-view frames compile none of that code.
+  // (passes/common/shadow_common.glsl), so one-view frames compile none of that code. Sources
+  // that define SIX_FACES themselves (a pass that renders faces of its own) are taken as given.
   gl::ShaderProgram& program(const gl::ShaderSources& sources);
 
   // Binding helpers (texture units are allocated per call sequence within one pass).

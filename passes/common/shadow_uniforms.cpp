@@ -17,26 +17,30 @@ scene::Bounds frame_bounds(const exec::FrameInputs& frame) {
   return frame.scene ? frame.scene->cpu().bounds : scene::Bounds{};
 }
 
-// The six faces of the frame's map: shadow_common.glsl's u_light_face_* (tile rectangles in map UV).
+// The six faces of the frame's map.
 Status set_face_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
   Result<scene::PointLightFaces> faces = scene::point_light_faces(frame.light, frame_bounds(frame), frame.shadow_size);
   if (!faces) return faces.error();
-  const float map = static_cast<float>(frame.shadow_size);
-  for (int i = 0; i < 6; ++i) {
-    const scene::LightFace& f = faces->faces[i];
-    p.set(gl::uniform_element("u_light_face_view_proj", i).c_str(), f.view_proj);
-    p.set(gl::uniform_element("u_light_face_rect", i).c_str(),
-          glm::vec4(glm::vec2(f.origin) / map, static_cast<float>(f.size) / map, 0.0f));
-  }
-  p.set("u_light_near", faces->near_plane);
-  p.set("u_light_far", faces->far_plane);
-  p.set("u_light_ortho", 0);
-  p.set("u_light_frustum_width", 2.0f * faces->tan_half_fov);
-  p.set("u_shadow_texel", 1.0f / static_cast<float>(faces->tile));
+  set_light_face_uniforms(p, *faces, frame.shadow_size);
   return {};
 }
 
 }  // namespace
+
+void set_light_face_uniforms(const gl::Program& p, const scene::PointLightFaces& faces, int map_size) {
+  const float map = static_cast<float>(map_size);
+  for (int i = 0; i < 6; ++i) {  // tile rectangles in map UV
+    const scene::LightFace& f = faces.faces[i];
+    p.set(gl::uniform_element("u_light_face_view_proj", i).c_str(), f.view_proj);
+    p.set(gl::uniform_element("u_light_face_rect", i).c_str(),
+          glm::vec4(glm::vec2(f.origin) / map, static_cast<float>(f.size) / map, 0.0f));
+  }
+  p.set("u_light_near", faces.near_plane);
+  p.set("u_light_far", faces.far_plane);
+  p.set("u_light_ortho", 0);
+  p.set("u_light_frustum_width", 2.0f * faces.tan_half_fov);
+  p.set("u_shadow_texel", 1.0f / static_cast<float>(faces.tile));
+}
 
 Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame, SixFaces six_faces) {
   const scene::ShadowFrustum& s = frame.shadow;

@@ -2,6 +2,7 @@
 // Sets the uniforms declared in passes/common/shadow_common.glsl from the frame's light.
 #include "exec/frame_inputs.h"
 #include "gl/program.h"
+#include "scene/light_faces.h"
 #include "util/error.h"
 
 namespace penumbra::passes {
@@ -16,6 +17,11 @@ enum class SixFaces { refused, read };
 // pass's name).
 [[nodiscard]] Status set_shadow_uniforms(const gl::Program& program, const exec::FrameInputs& frame,
                                          SixFaces six_faces = SixFaces::refused);
+
+// shadow_common.glsl's six-face uniforms (u_light_face_*, near, far, texel, frustum width) for
+// `faces` in a map of `map_size` texels; set_shadow_uniforms() sets them for the frame's light, a
+// pass that renders its own faces (the raster reference's sample points) for those.
+void set_light_face_uniforms(const gl::Program& program, const scene::PointLightFaces& faces, int map_size);
 
 // The shadow-map window depth bias units as documented for the shadow_map pass.
 struct ShadowBias {

@@ -11,7 +11,9 @@
 #include "exec/pass_decl_builder.h"
 #include "passes/shadow_map/shadow_map_pass.h"
 #include "graph/parameters.h"
+#include "passes/common/shadow_uniforms.h"
 #include "sample_view.h"
+#include "sphere_light_points.h"
 
 namespace penumbra::reference {
 namespace {
@@ -25,15 +27,22 @@ using graph::Format;
 // the units the compute programs use.
 constexpr GLuint kSceneTextureUnit = 7;
 
+// The light's sample points: scene::light_samples (the ray tracer's) for spot and directional
+// lights; for a point light, points that fill its ball so that every receiver sees them spread
+// over its own disk (sphere_light_points.h).
+std::vector<scene::LightSample> sample_points(const scene::Light& light, const scene::Bounds& bounds, int count,
+                                              uint32_t seed) {
+  if (light.type != scene::LightType::point) return scene::light_samples(light, bounds, count, seed);
+  std::vector<scene::LightSample> out;
+  for (const glm::vec3& p : sphere_light_points(light, count, seed)) out.push_back({.point = p, .is_point = true});
+  return out;
+}
+
 class RasterReferencePass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
     const exec::FrameInputs& frame = ctx.frame();
     if (!frame.scene) return make_error("reference_raster: no scene", ErrorKind::internal);
-    if (frame.light.type == scene::LightType::point)
-      return make_error("reference_raster: point lights need a map in every direction per sample point, which the "
-                        "raster reference does not render; use method=raytraced",
-                        ErrorKind::bad_input);
     const int samples = ctx.integer("samples"), map_size = ctx.integer("map_size");
     const int seed = ctx.integer("seed");
     const float slope_bias = ctx.real("slope_bias"), constant_bias = ctx.real("constant_bias");
@@ -48,15 +57,24 @@ class RasterReferencePass final : public exec::PassImpl {
       key_ = std::move(key);
       has_key_ = true;
       done_ = 0;
-      samples_ = scene::light_samples(frame.light, frame.scene->cpu().bounds, samples, static_cast<uint32_t>(seed));
+      samples_ = sample_points(frame.light, frame.scene->cpu().bounds, samples, static_cast<uint32_t>(seed));
       accumulation.clear(0.0f);
     }
     if (Status s = ensure_map(map_size); !s) return s;
 
-    gl::ShaderProgram& depth = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
-                                            .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
+    // A point light's samples are point lights inside the scene: six faces each, whether or not
+    // the frame's own map needs them (scene/light_faces.h).
+    const bool six_faces = frame.light.type == scene::LightType::point;
+    gl::ShaderSources depth_sources{.vertex = "passes/shadow_map/shadow_map.vert.glsl",
+                                    .fragment = "passes/shadow_map/shadow_map.frag.glsl"};
+    gl::ShaderSources acc_sources{.compute = "techniques/reference/raster_accumulate.comp.glsl"};
+    if (six_faces) {
+      depth_sources.defines.push_back({"LINEAR_FACE_DEPTH", "1"});
+      acc_sources.defines.push_back({"SIX_FACES", "1"});
+    }
+    gl::ShaderProgram& depth = ctx.program(depth_sources);
     if (!depth.valid()) return *depth.last_error();
-    gl::ShaderProgram& acc = ctx.program({.compute = "techniques/reference/raster_accumulate.comp.glsl"});
+    gl::ShaderProgram& acc = ctx.program(acc_sources);
     if (!acc.valid()) return *acc.last_error();
     gl::ShaderProgram& resolve = ctx.program({.compute = "techniques/reference/raster_resolve.comp.glsl"});
     if (!resolve.valid()) return *resolve.last_error();
@@ -75,13 +93,22 @@ class RasterReferencePass final : public exec::PassImpl {
       ctx.bind_image(0, "accumulation", GL_READ_WRITE);
       for (int i = 0; i < todo; ++i, ++done_) {
         const scene::LightSample& sample = samples_[static_cast<size_t>(progressive_index(done_, samples))];
-        const SampleView view = sample_view(frame.light, bounds, sample);
-        render_map(depth.program(), *frame.scene, view.view_proj, slope_bias, constant_bias);
+        if (six_faces) {
+          Result<scene::PointLightFaces> faces = render_faces(depth.program(), *frame.scene, frame.light, sample.point,
+                                                              map_size, slope_bias, constant_bias);
+          if (!faces) return faces.error();
+          passes::set_light_face_uniforms(acc.program(), *faces, map_size);
+          acc.program().set("u_texel_tan", 2.0f * faces->tan_half_fov / static_cast<float>(faces->tile));
+          acc.program().set("u_texel_world", 0.0f);
+        } else {
+          const SampleView view = sample_view(frame.light, bounds, sample);
+          render_map(depth.program(), *frame.scene, view.view_proj, slope_bias, constant_bias);
+          acc.program().set("u_sample_view_proj", view.view_proj);
+          acc.program().set("u_texel_tan", view.frustum_tan / static_cast<float>(map_size));
+          acc.program().set("u_texel_world", view.width_world / static_cast<float>(map_size));
+        }
         glBindTextureUnit(map_unit, map_.id());
         glBindSampler(map_unit, 0);
-        acc.program().set("u_sample_view_proj", view.view_proj);
-        acc.program().set("u_texel_tan", view.frustum_tan / static_cast<float>(map_size));
-        acc.program().set("u_texel_world", view.width_world / static_cast<float>(map_size));
         acc.program().set("u_sample_is_point", sample.is_point ? 1 : 0);
         acc.program().set("u_sample_point", sample.point);
         acc.program().set("u_sample_dir", glm::normalize(sample.is_point ? frame.light.direction : sample.direction));
@@ -119,6 +146,25 @@ class RasterReferencePass final : public exec::PassImpl {
                   float slope_bias, float constant_bias) {
     passes::render_depth_map(fb_, program, scene, view_proj, slope_bias, constant_bias, kSceneTextureUnit);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  // One point light sample's six faces (a point light of no size at `point`), with the same
+  // biases; the depth written is linear along each face's axis (shadow_map.frag.glsl).
+  Result<scene::PointLightFaces> render_faces(const gl::Program& program, const exec::GpuScene& scene,
+                                              const scene::Light& light, const glm::vec3& point, int map_size,
+                                              float slope_bias, float constant_bias) {
+    scene::Light at = light;
+    at.position = point;
+    at.size = 0.0f;
+    Result<scene::PointLightFaces> faces = scene::point_light_faces(at, scene.cpu().bounds, map_size);
+    if (!faces) return faces.error();
+    program.set("u_light_near", faces->near_plane);
+    program.set("u_light_far", faces->far_plane);
+    program.set("u_slope_bias", slope_bias);
+    program.set("u_constant_bias", constant_bias);
+    passes::render_depth_faces(fb_, program, scene, faces->faces, slope_bias, constant_bias, kSceneTextureUnit);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return faces;
   }
 
   gl::Texture map_;
