@@ -15,6 +15,7 @@
 #include "cli/context_option.h"
 #include "cli/options/plugin_option.h"
 #include "measurement/eval_capture.h"
+#include "cli/options/cascade_option.h"
 #include "cli/options/scene_option.h"
 #include "measurement/reference_frame.h"
 #include "measurement/technique_spec.h"
@@ -24,7 +25,7 @@ namespace penumbra::cli {
 using namespace measurement;  // the measurements this command runs and reports
 namespace {
 
-const std::vector<OptionSpec> kSpecs = with_scene_options({
+const std::vector<OptionSpec> kSpecs = with_cascade_options(with_scene_options({
     {"techniques", true, false, "a,b:k=v,...", "techniques to time, each with settings of its own "
                                                 "(mpg:alteration=pcf); default: every registered one but reference"},
     {"scenes", true, false, "s1,s2", "built-in scenes or glTF files (default colonnade)"},
@@ -37,12 +38,13 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"no-peaks", false, false, "", "skip measuring the copy and texture-fetch peaks (GB/s and % of peak stay 0)"},
     context_option_spec(),
     plugin_dir_option_spec(),
-});
+}));
 
 int fail(const Error& e) { return report_failure("bench", e); }
 
 struct BenchOptions {
   std::vector<TechniqueSpec> techniques;
+  scene::CascadeSettings cascades;
   std::vector<std::string> scenes{"colonnade"}, sets;
   std::vector<std::pair<int, int>> sizes{{1920, 1080}};
   std::vector<int> shadow_sizes{2048};
@@ -64,6 +66,9 @@ Result<BenchOptions> parse_bench_options(const ParsedArgs& args, const technique
     for (const std::string& n : registry.names())
       if (n != kReferenceTechnique) o.techniques.push_back({n, {}, n});
   }
+  Result<scene::CascadeSettings> cascades = parse_cascade_options(args);
+  if (!cascades) return cascades.error();
+  o.cascades = *cascades;
   if (auto s = args.get("scenes")) {
     auto list = split_list("scenes", *s);
     if (!list) return list.error();
@@ -158,6 +163,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
       if (Status s = session.resize(width, height); !s) return fail(s.error());
       for (int shadow : o.shadow_sizes) {
         if (Status s = session.set_shadow_size(shadow); !s) return fail(s.error());
+        if (Status s = session.set_cascades(o.cascades); !s) return fail(s.error());
         for (const TechniqueSpec& t : o.techniques) {
           std::fprintf(stderr, "[%zu/%zu] bench %s on %s (%dx%d, shadow %d): %d + %d frames...\n",
                        report.rows.size() + 1, rows, t.label.c_str(), scene.name.c_str(), width, height, shadow,

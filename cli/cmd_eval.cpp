@@ -18,6 +18,7 @@
 #include "measurement/eval_capture.h"
 #include "measurement/eval_report.h"
 #include "measurement/flicker_run.h"
+#include "cli/options/cascade_option.h"
 #include "cli/options/scene_option.h"
 #include "measurement/reference_frame.h"
 #include "measurement/technique_eval.h"
@@ -33,7 +34,7 @@ namespace {
 // Heat maps show |technique - reference| / kHeatMapScale (white at 0.25 and above).
 constexpr float kHeatMapScale = 0.25f;
 
-const std::vector<OptionSpec> kSpecs = with_scene_options({
+const std::vector<OptionSpec> kSpecs = with_cascade_options(with_scene_options({
     scene_name_option(),
     {"techniques", true, false, "a,b:k=v,...", "techniques to evaluate, each with settings of its own (pmchss:variant=regular:k=2)"},
     {"reference", true, false, "raytraced|raster", "ground truth method (default raytraced)"},
@@ -52,7 +53,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"flicker-step", true, false, "DEG", "--flicker motion per frame, degrees (default 0.25)"},
     context_option_spec(),
     plugin_dir_option_spec(),
-});
+}));
 
 constexpr int kWarmupFrames = 3;
 
@@ -60,6 +61,7 @@ int fail(const Error& e) { return report_failure("eval", e); }
 
 struct EvalOptions {
   std::string scene_name;
+  scene::CascadeSettings cascades;
   std::vector<TechniqueSpec> techniques;
   std::string reference = "raytraced";
   int width = 640, height = 360, shadow = 2048, rays = 256, samples = 1024, frames = 10;
@@ -96,6 +98,9 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const technique::
       if (!n) return n.error();
       *i.value = *n;
     }
+  Result<scene::CascadeSettings> cascades = parse_cascade_options(args);
+  if (!cascades) return cascades.error();
+  o.cascades = *cascades;
   if (auto m = args.get("flicker")) {
     if (Status s = check_flicker_motion(*m); !s) return s.error();
     FlickerSettings f;
@@ -255,6 +260,7 @@ int cmd_eval(const std::vector<std::string>& argv) {
   session.set_scene(*scene);
   if (Status s = session.resize(o.width, o.height); !s) return fail(s.error());
   if (Status s = session.set_shadow_size(o.shadow); !s) return fail(s.error());
+  if (Status s = session.set_cascades(o.cascades); !s) return fail(s.error());
 
   std::fprintf(stderr, "reference (%s) on %s at %dx%d...\n", o.reference.c_str(), scene->name.c_str(), o.width, o.height);
   const auto t0 = std::chrono::steady_clock::now();

@@ -6,6 +6,7 @@
 #include "cli/command.h"
 #include "cli/context_option.h"
 #include "cli/options/plugin_option.h"
+#include "cli/options/cascade_option.h"
 #include "cli/options/scene_option.h"
 #include "gl/texture_png.h"
 #include "measurement/progressive_render.h"
@@ -17,7 +18,7 @@
 namespace penumbra::cli {
 namespace {
 
-const std::vector<OptionSpec> kSpecs = with_scene_options({
+const std::vector<OptionSpec> kSpecs = with_cascade_options(with_scene_options({
     scene_name_option(),
     {"technique", true, false, "T", "technique name (default pcss if registered, else the first); see 'penumbra techniques'"},
     {"set", true, true, kAssignmentValueName, "set a technique parameter"},
@@ -30,7 +31,7 @@ const std::vector<OptionSpec> kSpecs = with_scene_options({
     {"frames", true, false, "N", "frames to run before writing (progressive techniques; default 1)"},
     context_option_spec(),
     plugin_dir_option_spec(),
-});
+}));
 
 int fail(const Error& e) { return report_failure("render", e); }
 
@@ -90,6 +91,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (!n) return fail(n.error());
     shadow = *n;
   }
+  Result<scene::CascadeSettings> cascades = parse_cascade_options(*args);
+  if (!cascades) return fail(cascades.error());
   if (auto s = args->get("frames")) {
     auto n = parse_int("frames", *s, 1, 100000);
     if (!n) return fail(n.error());
@@ -127,6 +130,7 @@ int cmd_render(const std::vector<std::string>& argv) {
   session.set_scene(*scene);
   if (Status s = session.resize(width, height); !s) return fail(s.error());
   if (Status s = session.set_shadow_size(shadow); !s) return fail(s.error());
+  if (Status s = session.set_cascades(*cascades); !s) return fail(s.error());
 
   std::string dir = args->get("out-dir").value_or("out");
   OutputBatch batch;

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/camera.h"
+#include "scene/cascades.h"
 #include "scene/light.h"
 
 namespace penumbra::exec {
@@ -16,6 +17,7 @@ struct FrameInputs {
   scene::Camera camera;
   scene::Light light;
   scene::ShadowFrustum shadow;  // the light's frustum fitted to the scene
+  scene::ShadowCascades cascades;  // count > 1: the map's tiles are cascades (scene/cascades.h)
   int screen_w = 0, screen_h = 0;  // pixels
   int shadow_size = 0;             // texels (square)
   std::uint32_t frame_index = 0;   // increases by one per executed frame

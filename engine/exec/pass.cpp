@@ -73,10 +73,12 @@ std::string PassContext::enumeration(std::string_view name) const {
 
 gl::ShaderProgram& PassContext::program(const gl::ShaderSources& sources) {
   const bool defined = std::ranges::any_of(sources.defines, [](const auto& d) { return d.first == "SIX_FACES"; });
-  if (!frame().shadow.six_faces || defined) return shaders_.get(sources);
-  gl::ShaderSources six = sources;  // the six-face variant (passes/common/shadow_common.glsl)
-  six.defines.push_back({"SIX_FACES", "1"});
-  return shaders_.get(six);
+  const bool six_faces = frame().shadow.six_faces && !defined, cascades = frame().cascades.count > 1;
+  if (!six_faces && !cascades) return shaders_.get(sources);
+  gl::ShaderSources variant = sources;  // passes/common/shadow_common.glsl's variants
+  if (six_faces) variant.defines.push_back({"SIX_FACES", "1"});
+  if (cascades) variant.defines.push_back({"CASCADES", std::to_string(frame().cascades.count)});
+  return shaders_.get(variant);
 }
 
 void PassContext::bind_sampled(const gl::ShaderProgram& p, const char* uniform, std::string_view slot,

@@ -67,6 +67,7 @@ class PassContext {
   // light needs six faces (frame().shadow.six_faces) gets the variant with SIX_FACES defined
   // (passes/common/shadow_common.glsl), so one-view frames compile none of that code. Sources
   // that define SIX_FACES themselves (a pass that renders faces of its own) are taken as given.
+  // A frame with cascades (frame().cascades.count > 1) gets CASCADES defined as their count.
   gl::ShaderProgram& program(const gl::ShaderSources& sources);
 
   // Binding helpers (texture units are allocated per call sequence within one pass).

@@ -242,6 +242,64 @@ void add_room(SceneBuilder& b, const Params& p) {
   b.scene.camera = Camera::look_at({-0.42f * w, 1.7f, 0.42f * d}, {0.4f, 0.5f, -0.6f}, glm::radians(70.0f));
 }
 
+// A street under the sun, long enough that one shadow map over it has texels of decimetres near
+// the camera: lamp posts with arms every `post_spacing` metres on both sides out to `length`, a
+// pergola of thin beams and benches near the camera, the camera at eye height looking along it.
+// Casters stand from about 1 m to `length` from the camera (cascades: scene/cascades.h).
+const std::vector<ProceduralParam> kAvenueParams = {
+    {"length", 200.0f, "length of the avenue in front of the camera, metres"},
+    {"post_spacing", 8.0f, "distance between lamp posts along each side, metres"},
+    {"post_height", 4.5f, "lamp post height, metres"}};
+
+Status check_avenue(const Params& p) {
+  if (!(p("length") >= 10.0f && p("length") <= 2000.0f))
+    return make_error("avenue: length must be in [10, 2000] metres", ErrorKind::bad_input);
+  if (!(p("post_spacing") >= 1.0f) || p("length") / p("post_spacing") > 2000.0f)
+    return make_error("avenue: post_spacing must be at least 1 metre and length / post_spacing at most 2000",
+                      ErrorKind::bad_input);
+  if (!(p("post_height") >= 0.5f && p("post_height") <= 50.0f))
+    return make_error("avenue: post_height must be in [0.5, 50] metres", ErrorKind::bad_input);
+  return {};
+}
+
+void add_avenue(SceneBuilder& b, const Params& p) {
+  const float length = p("length"), spacing = p("post_spacing"), h = p("post_height");
+  const float road = 3.5f;  // half width: posts stand at x = +-road
+  // The camera stands at z = 0 looking down -z; the ground runs from behind it to past the end.
+  b.add(ground_mesh(4.0f * road + 8.0f, length + 12.0f, {0.0f, 0.0f, -0.5f * length + 4.0f}),
+        b.material("pavement", glm::vec3(0.68f, 0.66f, 0.62f)), glm::mat4(1.0f));
+  Mesh posts, pergola, benches;
+  posts.name = "lamp_posts";
+  pergola.name = "pergola";
+  benches.name = "benches";
+  for (float z = -2.0f; z > -length; z -= spacing)
+    for (float side : {-1.0f, 1.0f}) {
+      const float x = side * road;
+      build::add_cylinder(posts, {x, 0.0f, z}, {x, h, z}, 0.09f, 12);
+      build::add_box(posts, {x - side * 0.6f, h - 0.05f, z}, {0.6f, 0.05f, 0.05f});  // arm over the road
+      build::add_box(posts, {x - side * 1.15f, h - 0.25f, z}, {0.15f, 0.12f, 0.1f});  // lamp head
+    }
+  // A pergola of slats 2.6 m up over the first 6 m: thin casters with wide penumbrae.
+  for (float x : {-2.0f, 2.0f})
+    for (float z : {-1.0f, -7.0f}) build::add_box(pergola, {x, 1.3f, z}, {0.08f, 1.3f, 0.08f});
+  for (float x : {-2.0f, 2.0f}) build::add_box(pergola, {x, 2.65f, -4.0f}, {0.1f, 0.06f, 3.2f});
+  for (int i = 0; i < 13; ++i)
+    build::add_box(pergola, {0.0f, 2.75f, -1.0f - 0.5f * static_cast<float>(i)}, {2.4f, 0.04f, 0.05f});
+  // Benches a metre or two from the camera and further along: contact shadows near and far.
+  for (float z : {-1.5f, -12.0f, -40.0f})
+    for (float side : {-1.0f, 1.0f}) {
+      const float x = side * (road - 1.0f);
+      build::add_box(benches, {x, 0.45f, z}, {0.25f, 0.04f, 0.9f});  // seat
+      for (float dz : {-0.75f, 0.75f}) build::add_box(benches, {x, 0.21f, z + dz}, {0.2f, 0.21f, 0.04f});
+    }
+  b.add(std::move(posts), b.material("iron", glm::vec3(0.35f, 0.36f, 0.38f)), glm::mat4(1.0f));
+  b.add(std::move(pergola), b.material("timber", glm::vec3(0.55f, 0.42f, 0.3f)), glm::mat4(1.0f));
+  b.add(std::move(benches), b.material("bench", glm::vec3(0.6f, 0.5f, 0.4f)), glm::mat4(1.0f));
+  b.scene.camera = Camera::look_at({0.6f, 1.7f, 1.0f}, {0.0f, 0.9f, -12.0f}, glm::radians(60.0f), 0.1f,
+                                   length + 20.0f);
+  b.scene.light = sky_light(p, {0.0f, 0.0f, -0.5f * length});
+}
+
 const std::vector<ProceduralParam> kLightParams(float size, float elevation, float azimuth, float distance) {
   return {{"light_size", size, "emitter disk diameter, metres"},
           {"light_elevation", elevation, "light elevation above the horizon, degrees"},
@@ -318,6 +376,8 @@ const std::vector<BuiltinScene>& registry() {
          b.scene.light = sky_light(p, {0, 0, -0.5f});
        }},
       {"room", kRoomParams, [](SceneBuilder& b, const Params& p) { add_room(b, p); }, check_room},
+      {"avenue", join(kAvenueParams, kLightParams(2.0f, 35.0f, 60.0f, 150.0f)),
+       [](SceneBuilder& b, const Params& p) { add_avenue(b, p); }, check_avenue},
       {"showcase",
        join(join(join(join(kFenceParams, kBallParams), kPoleParams), kColonnadeParams),
             kLightParams(0.7f, 40.0f, 25.0f, 16.0f)),

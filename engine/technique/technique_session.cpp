@@ -116,6 +116,13 @@ Status TechniqueSession::set_shadow_size(int texels) {
   return technique_.empty() ? Status{} : compile_current();
 }
 
+Status TechniqueSession::set_cascades(const scene::CascadeSettings& cascades) {
+  if (Status s = scene::check_cascade_settings(cascades); !s) return s;
+  // The shaders' variant follows the count (PassContext::program), so no recompile is needed.
+  cascades_ = cascades;
+  return {};
+}
+
 Status TechniqueSession::recompile() { return technique_.empty() ? Status{} : compile_current(); }
 
 Status TechniqueSession::render() {
@@ -129,6 +136,11 @@ Status TechniqueSession::render() {
   frame.screen_w = settings_.screen_w;
   frame.screen_h = settings_.screen_h;
   frame.shadow_size = settings_.shadow_size;
+  Result<scene::ShadowCascades> cascades = scene::shadow_cascades(light_, frame.shadow, camera_, frame.aspect(),
+                                                                  gpu_scene_->cpu().bounds, cascades_,
+                                                                  settings_.shadow_size);
+  if (!cascades) return cascades.error();
+  frame.cascades = *cascades;
   frame.frame_index = frame_++;
   return executor_.execute(params_, frame);
 }

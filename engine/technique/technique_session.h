@@ -20,6 +20,7 @@
 #include "exec/gpu_scene.h"
 #include "graph/compiler.h"
 #include "graph/parameters.h"
+#include "scene/cascades.h"
 #include "technique/technique.h"
 
 namespace penumbra::technique {
@@ -48,6 +49,11 @@ class TechniqueSession {
 
   Status resize(int width, int height);
   Status set_shadow_size(int texels);
+  // Cascaded shadow maps for a directional light (scene/cascades.h); 1 cascade (the default) is
+  // one map over the scene. Errors: settings out of range. A frame with cascades under a light
+  // that is not directional fails with a bad-input Error.
+  Status set_cascades(const scene::CascadeSettings& cascades);
+  const scene::CascadeSettings& cascades() const { return cascades_; }
   const graph::CompileSettings& settings() const { return settings_; }
   // Debug switches and keep-alive list; call recompile() after changing them.
   graph::CompileOptions& compile_options() { return options_; }
@@ -86,6 +92,7 @@ class TechniqueSession {
   graph::GraphDesc graph_;  // composed frame graph
   graph::ParameterSet params_;
   graph::CompileSettings settings_{512, 512, 2048};
+  scene::CascadeSettings cascades_;
   graph::CompileOptions options_;
   std::uint32_t frame_ = 0;
   int compile_count_ = 0;

@@ -124,6 +124,15 @@ vec2 shadow_offset_to(Receiver r, vec3 world) {
   return vec2(dot(w, tx), dot(w, ty)) / (max(dot(w, w0), 1e-6) * u_light_frustum_width);
 }
 
+// Cascades: a map UV kept inside the invocation's cascade, one texel from its tile's edges, so a
+// tap's bilinear (or gathered) texels are all its own; a kernel wider than the cascade's margin
+// reads its edge texels, as one map's taps do at the map's edge.
+vec2 clamp_to_cascade(vec2 uv) {
+  if (kCascades == 1 || g_cascade < 0 || g_cascade >= kCascades) return uv;
+  vec4 rect = u_cascade_rect[g_cascade];
+  return clamp(uv, rect.xy + u_shadow_texel, rect.xy + rect.z - u_shadow_texel);
+}
+
 // Where a filter tap reads the map, and what it compares there.
 struct ShadowTap {
   vec2 uv;              // map UV
@@ -143,7 +152,7 @@ const float kMaxFractionalTexel = 0.05;
 ShadowTap shadow_tap(Receiver r, vec2 offset_uv, float bias) {
   ShadowTap t;
   if (kLightFaces == 1) {
-    t.uv = r.coord.xy + offset_uv;
+    t.uv = clamp_to_cascade(r.coord.xy + offset_uv);
     t.ref = receiver_depth_at(r, offset_uv, bias);
     t.distance_scale = 1.0;
     return t;

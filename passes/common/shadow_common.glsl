@@ -17,6 +17,21 @@ const int kLightFaces = 6;
 #else
 const int kLightFaces = 1;
 #endif
+// Cascades (scene/cascades.h) are a compile-time variant too: PassContext::program() defines
+// CASCADES as their count for a frame that has more than one. Each is a tile of the map with an
+// orthographic view of its own; all share the scene map's light view and depth range, so a depth
+// means one distance everywhere and only the width of a texel changes between cascades.
+#ifdef CASCADES
+const int kCascades = CASCADES;
+#else
+const int kCascades = 1;
+#endif
+// The map is tiles (six faces or cascades): every read of it goes through shadow_tap().
+const bool kTiledMap = kLightFaces != 1 || kCascades != 1;
+uniform mat4 u_cascade_view_proj[4];  // cascades: world -> clip of each
+uniform vec4 u_cascade_rect[4];       // cascades: tile origin (xy) and side (z), map UV; w: its width, world units
+uniform float u_cascade_margin;       // cascades: scene::kCascadeMargin, as a fraction of a square's half side
+uniform float u_cascade_blend;        // cascades: the blend band, as a fraction of a square's half side
 uniform mat4 u_light_face_view_proj[6];  // six faces: world -> clip of each face
 uniform vec4 u_light_face_rect[6];       // six faces: tile origin (xy) and side (z), map UV
 uniform mat4 u_light_view_proj;   // world -> light clip space
@@ -46,10 +61,54 @@ vec3 face_shadow_coord(int face, vec3 world) {
   return vec3(rect.xy + (ndc * 0.5 + 0.5) * rect.z, (clip.w - u_light_near) / (u_light_far - u_light_near));
 }
 
+// The cascade an invocation reads: that of the first point it looks up (its receiver), so the
+// receiver's neighbours and taps are all read in the receiver's cascade.
+int g_cascade = -1;
+
+// A hash of a world position in [0, 1): the same point gives the same value in every pass.
+float position_hash(vec3 p) {
+  uvec3 u = floatBitsToUint(p);
+  uint h = u.x * 0x8da6b343u ^ u.y * 0xd8163841u ^ u.z * 0xcb1ab31fu;
+  h ^= h >> 16; h *= 0x7feb352du; h ^= h >> 15; h *= 0x846ca68bu; h ^= h >> 16;
+  return float(h >> 8) * (1.0 / 16777216.0);
+}
+
+// The first cascade whose square holds `world` at least the margin inside its edge (room for a
+// filter kernel); within the blend band beyond, the next cascade for a share of the points that
+// grows towards the margin (a dithered blend: scene/cascades.h). kCascades: none holds it.
+int cascade_of(vec3 world) {
+  float jitter = position_hash(world);
+  for (int i = 0; i < kCascades; ++i) {
+    vec4 clip = u_cascade_view_proj[i] * vec4(world, 1.0);
+    float edge = max(abs(clip.x), abs(clip.y));   // 1 at the square's edge (orthographic: w = 1)
+    float held = 1.0 - u_cascade_margin;          // inside this: held with room for a kernel
+    if (i == kCascades - 1) return edge <= 1.0 ? i : kCascades;
+    if (edge <= held - u_cascade_blend) return i;
+    if (edge <= held && jitter * u_cascade_blend < held - edge) return i;
+  }
+  return kCascades;
+}
+
+// The width of the light's frustum in the sense of u_light_frustum_width, for the invocation's
+// cascade: its square's world width over its side in map UV, so a world size / this is map UV.
+float light_frustum_width() {
+  if (kCascades == 1) return u_light_frustum_width;
+  vec4 rect = u_cascade_rect[max(g_cascade, 0)];
+  return rect.w / rect.z;
+}
+
 // (shadow-map uv in [0,1], window depth in [0,1]) of a world position: six faces, through the
-// face of its direction from the light.
+// face of its direction from the light; cascades, through the invocation's cascade (outside the
+// map when no cascade holds its receiver).
 vec3 shadow_coord(vec3 world) {
   if (kLightFaces == 6) return face_shadow_coord(light_face(world - u_light_pos), world);
+  if (kCascades != 1) {
+    if (g_cascade < 0) g_cascade = cascade_of(world);
+    if (g_cascade >= kCascades) return vec3(-1.0);
+    vec3 ndc = (u_cascade_view_proj[g_cascade] * vec4(world, 1.0)).xyz;
+    vec4 rect = u_cascade_rect[g_cascade];
+    return vec3(rect.xy + (ndc.xy * 0.5 + 0.5) * rect.z, ndc.z * 0.5 + 0.5);
+  }
   vec4 clip = u_light_view_proj * vec4(world, 1.0);
   vec3 ndc = clip.xyz / clip.w;
   return ndc * 0.5 + 0.5;
@@ -89,8 +148,8 @@ float light_distance_of(vec3 world) {
 // the UV scale does not depend on distance; for a perspective map a world size at distance d
 // covers size / (d * frustum width at distance 1) of the map.
 float light_size_uv_at(float d) {
-  if (u_light_ortho == 1) return u_light_size_world / u_light_frustum_width;
-  return u_light_size_world / (max(d, 1e-4) * u_light_frustum_width);
+  if (u_light_ortho == 1) return u_light_size_world / light_frustum_width();
+  return u_light_size_world / (max(d, 1e-4) * light_frustum_width());
 }
 
 // Unit direction from a receiver towards the light's centre.
@@ -115,8 +174,8 @@ bool faces_away_from_light(vec3 world, vec3 normal) {
 //    receiver, where one UV unit spans d_r * (frustum width at distance 1).
 float penumbra_width_uv(float d_r, float d_b) {
   float h = max(d_r - d_b, 0.0);
-  if (u_light_ortho == 1) return h * u_light_size_world / (max(u_light_emitter_distance, 1e-4) * u_light_frustum_width);
-  return u_light_size_world * h / max(d_b, 1e-4) / (max(d_r, 1e-4) * u_light_frustum_width);
+  if (u_light_ortho == 1) return h * u_light_size_world / (max(u_light_emitter_distance, 1e-4) * light_frustum_width());
+  return u_light_size_world * h / max(d_b, 1e-4) / (max(d_r, 1e-4) * light_frustum_width());
 }
 
 // Penumbra width (shadow-map UV) of an edge `height` world units above its receiver, for a

@@ -10,7 +10,7 @@
 namespace penumbra::passes {
 namespace {
 
-// Every built-in technique; a plugin pass that refuses is told which do.
+// Every built-in technique reads six faces; a plugin pass that refuses is told which do.
 const char* kSixFaceTechniques = "hard, pcf, pcss, pmchss, mpg, sspcss and esm";
 
 scene::Bounds frame_bounds(const exec::FrameInputs& frame) {
@@ -42,6 +42,24 @@ void set_light_face_uniforms(const gl::Program& p, const scene::PointLightFaces&
   p.set("u_shadow_texel", 1.0f / static_cast<float>(faces.tile));
 }
 
+namespace {
+
+// shadow_common.glsl's u_cascade_* (tile rectangles in map UV, each square's world width).
+void set_cascade_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
+  const scene::ShadowCascades& c = frame.cascades;
+  const float map = static_cast<float>(frame.shadow_size);
+  for (int i = 0; i < c.count; ++i) {
+    const scene::LightFace& t = c.tiles[i];
+    p.set(gl::uniform_element("u_cascade_view_proj", i).c_str(), t.view_proj);
+    p.set(gl::uniform_element("u_cascade_rect", i).c_str(),
+          glm::vec4(glm::vec2(t.origin) / map, static_cast<float>(t.size) / map, c.width_world[i]));
+  }
+  p.set("u_cascade_margin", scene::kCascadeMarginOfHalfSide);
+  p.set("u_cascade_blend", c.blend);
+}
+
+}  // namespace
+
 Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame, SixFaces six_faces) {
   const scene::ShadowFrustum& s = frame.shadow;
   p.set("u_light_size_world", frame.light.size);
@@ -66,6 +84,14 @@ Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame,
   const float width = s.orthographic ? s.width_world : 2.0f * s.tan_half_fov;
   p.set("u_light_frustum_width", width);
   p.set("u_shadow_texel", 1.0f / static_cast<float>(std::max(frame.shadow_size, 1)));
+  if (frame.cascades.count > 1) {
+    if (six_faces == SixFaces::refused)
+      return make_error(std::string("cascaded shadow maps keep each cascade in a tile of the map, which this pass "
+                                    "does not read (techniques that do: ") +
+                            kCascadeTechniques + "; or use one cascade)",
+                        ErrorKind::bad_input);
+    set_cascade_uniforms(p, frame);
+  }
   return {};
 }
 

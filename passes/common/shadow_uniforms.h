@@ -7,13 +7,17 @@
 
 namespace penumbra::passes {
 
-// Whether a pass reads the six-face map of a point light inside the scene (scene/light_faces.h):
-// its shader places every tap with shadow_common.glsl's shadow_tap() / shadow_coord(), which
-// pick the face by direction. A pass whose shader offsets shadow-map UV itself `refuses` them.
+// Whether a pass reads a map of tiles: the six-face map of a point light inside the scene
+// (scene/light_faces.h) or cascades (scene/cascades.h). Its shader places every tap with
+// shadow_common.glsl's shadow_tap() / shadow_coord(), which pick the face by direction and keep
+// a cascade's taps in its tile. A pass whose shader offsets shadow-map UV itself `refuses` them.
 enum class SixFaces { refused, read };
 
-// For a frame whose light needs six faces (frame.shadow.six_faces), a pass that refuses them
-// gets a bad-input Error naming the techniques that shadow such a light (the executor adds the
+// The built-in techniques that read cascades (esm does not: its extended map has one texel size).
+inline constexpr const char* kCascadeTechniques = "hard, pcf, pcss, pmchss, mpg and sspcss";
+
+// For a frame whose light needs six faces (frame.shadow.six_faces) or that has cascades, a pass
+// that refuses them gets a bad-input Error naming the techniques that shadow such a light (the executor adds the
 // pass's name).
 [[nodiscard]] Status set_shadow_uniforms(const gl::Program& program, const exec::FrameInputs& frame,
                                          SixFaces six_faces = SixFaces::refused);

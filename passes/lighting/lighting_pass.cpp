@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "exec/pass_decl_builder.h"
+#include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::passes {
 namespace {
@@ -30,6 +31,9 @@ class LightingPass final : public exec::PassImpl {
     prog.set("u_light_point", f.light.type == scene::LightType::point ? 1 : 0);
     prog.set("u_spot_cos", std::cos(f.light.spot_angle));
     prog.set("u_ambient", ctx.real("ambient"));
+    // The cascade debug view (scene::CascadeSettings::tint) picks cascades as the filters do.
+    if (Status s = set_shadow_uniforms(prog, f, SixFaces::read); !s) return s;
+    prog.set("u_cascade_tint", f.cascades.tint ? 1 : 0);
     gl::Texture& color = ctx.texture("color");
     ctx.dispatch_over(p, color.width(), color.height());
     return {};

@@ -36,9 +36,10 @@ void main() {
     vec2 size = vec2(textureSize(u_shadow_map, 0));
     float sum = 0.0;
 #if PCF_KERNEL_BOX
-    if (kLightFaces != 1) {
-      // Six faces: the same N x N bilinear taps one (face) texel apart, each placed by its own
-      // direction (shadow_tap), since a gather's 2 x 2 block may straddle two faces' tiles.
+    if (kTiledMap) {
+      // Six faces or cascades: the same N x N bilinear taps one texel apart, each placed by
+      // shadow_tap (by its own direction, or kept in the cascade's tile), since a gather's 2 x 2
+      // block may straddle two tiles.
       int h = u_box_size / 2;
       for (int y = -h; y <= h; ++y)
         for (int x = -h; x <= h; ++x) sum += pcf_tap(u_shadow_map, r, vec2(x, y) * u_shadow_texel, u_depth_bias);

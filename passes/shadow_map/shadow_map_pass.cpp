@@ -55,6 +55,11 @@ class LightViewPass final : public exec::PassImpl {
     if (Status s = set_shadow_uniforms(p.program(), frame, six_faces); !s) return s;
     if (spec_.set_uniforms) spec_.set_uniforms(ctx, p.program());
     const float slope = ctx.real("slope_bias"), constant = ctx.real("constant_bias");
+    if (frame.cascades.count > 1) {  // one orthographic view per tile (scene/cascades.h)
+      render_depth_faces(fb_, p.program(), *frame.scene, std::span(frame.cascades.tiles.data(), frame.cascades.count),
+                         slope, constant, 0, clears_);
+      return {};
+    }
     if (!frame.shadow.six_faces) {
       render_depth_map(fb_, p.program(), *frame.scene, frame.shadow.view_proj, slope, constant, 0, clears_);
       return {};

@@ -89,9 +89,10 @@ void main() {
   }
   barrier();
 
-  // A point light's six faces: one plane per block cannot bound taps that may read another face's
-  // tile, so a tile with a receiver to filter is penumbra.
-  if (s_first == 0xffffffffu || kLightFaces != 1) {  // no receiver: the kinds above decide
+  // A point light's six faces, or cascades: one plane per block cannot bound taps that may read
+  // another face's tile, or a cascade of another texel size, so a tile with a receiver to filter
+  // is penumbra.
+  if (s_first == 0xffffffffu || kTiledMap) {  // no receiver: the kinds above decide
     if (i == 0u) {
       if (s_first != 0xffffffffu) s_all_lit = s_all_umbra = false;
       float tile_class = s_all_lit ? TILE_LIT : s_all_umbra ? TILE_UMBRA : TILE_PENUMBRA;

@@ -3,11 +3,18 @@
 #include <string>
 
 #include "exec/gpu_scene.h"
+#include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::esm {
 
 Result<EsmViews> frame_views(const exec::PassContext& ctx, int map_size) {
   const exec::FrameInputs& f = ctx.frame();
+  // The extended map's silhouette quads are drawn and read per view with one texel size; cascades
+  // would need both per cascade (README.md, "Cascades").
+  if (f.cascades.count > 1)
+    return make_error("esm does not read cascaded shadow maps (its extended map has one texel size); use one "
+                      "cascade, or a technique that reads them: " + std::string(passes::kCascadeTechniques),
+                      ErrorKind::bad_input);
   const scene::Bounds bounds = f.scene ? f.scene->cpu().bounds : scene::Bounds{};
   return make_esm_views(f.light, f.shadow, bounds, map_size);
 }

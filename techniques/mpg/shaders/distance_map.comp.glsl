@@ -71,7 +71,7 @@ layout(r8, binding = 2) uniform writeonly image2D u_d_tiles;  // 1 where the 16 
 
 // World units across the light per shadow-map UV unit, at a receiver d_r from the light.
 float world_per_uv(float d_r) {
-  return u_light_ortho == 1 ? u_light_frustum_width : max(d_r, 1e-4) * u_light_frustum_width;
+  return u_light_ortho == 1 ? light_frustum_width() : max(d_r, 1e-4) * light_frustum_width();
 }
 
 // World-unit penumbra width across the light direction (Fernando 2005, eq. 1, scene/light.h).

@@ -27,10 +27,11 @@ class ShadowMaskPass final : public exec::PassImpl {
                         "screen otherwise", ErrorKind::internal);
     // The min map is filtered in its own texels: over a point light's six tiles it takes depths of
     // the tile beside each face in the map, not on the sphere (room at 1080p: penumbra RMSE 2.6x
-    // pcss's, bands along every face edge).
-    if (source == "min_depth" && ctx.frame().shadow.six_faces)
-      return make_error("variant=min_filter filters the shadow map in its own texels, which mixes a point light's six "
-                        "faces; use variant=penumbra_mask (the default) or regular for a point light inside the scene");
+    // pcss's, bands along every face edge); over cascades, depths of the next cascade's tile.
+    if (source == "min_depth" && (ctx.frame().shadow.six_faces || ctx.frame().cascades.count > 1))
+      return make_error(std::string("variant=min_filter filters the shadow map in its own texels, which mixes ") +
+                            (ctx.frame().shadow.six_faces ? "a point light's six faces" : "cascades") +
+                            "; use variant=penumbra_mask (the default) or regular");
     const char* source_define = source == "mask" ? "1" : source == "min_depth" ? "2" : "0";
     std::vector<std::pair<std::string, std::string>> defines = {
         {"BLOCKER_SAMPLES", std::to_string(ctx.integer("blocker_samples"))},
