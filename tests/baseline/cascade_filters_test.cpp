@@ -127,3 +127,60 @@ TEST(CascadeFilters, TechniquesThatDoNotReadCascadesSayWhatWorks) {
   ASSERT_FALSE(st);
   EXPECT_NE(st.error().to_string().find("directional"), std::string::npos) << st.error().to_string();
 }
+
+// Stable cascades: moving the camera by a fifth of the nearest cascade's texel (and by many
+// texels) moves each square by whole texels, so every cascade's tile holds the same depths as
+// before, shifted by whole texels: the shadows' edges do not shimmer. Where the squares were
+// not snapped, a fifth of a texel would change the depths along every edge.
+TEST(CascadeFilters, ACameraMoveShiftsEachCascadesDepthsByWholeTexels) {
+  const scene::Scene s = test::builtin_scene("avenue");
+  test::TechniqueRig rig({.width = 160, .height = 90, .shadow_size = 1024, .techniques = register_builtin_techniques,
+                          .keep_alive = {"shadow_map"}});
+  const scene::CascadeSettings settings{.count = 4};
+  ASSERT_TRUE(rig.session().set_cascades(settings));
+  const scene::ShadowFrustum one = scene::shadow_frustum(s.light, s.bounds);
+  const float aspect = 160.0f / 90.0f;
+  auto before = scene::shadow_cascades(s.light, one, s.camera, aspect, s.bounds, settings, 1024);
+  ASSERT_TRUE(before);
+  const float texel0 = before->width_world[0] / static_cast<float>(before->tiles[0].size);
+  rig.render_frame(s, "hard");
+  const metrics::MaskImage map_before = rig.read("shadow_map");
+  for (const float move : {0.2f * texel0, 7.4f * texel0}) {
+    scene::Camera moved = s.camera;
+    moved.position += glm::vec3(move, 0.0f, 0.3f * move);
+    rig.session().camera() = moved;
+    rig.render();
+    const metrics::MaskImage map_after = rig.read("shadow_map");
+    auto after = scene::shadow_cascades(s.light, one, moved, aspect, s.bounds, settings, 1024);
+    ASSERT_TRUE(after);
+    ASSERT_EQ(map_after.width, 1024);
+    for (int i = 0; i < 4; ++i) {
+      // The texel a fixed world point falls in, before and after: the tile's content moved by that.
+      const glm::vec3 probe = glm::vec3(glm::inverse(before->tiles[i].view_proj) * glm::vec4(0.1f, -0.2f, 0.0f, 1.0f));
+      auto texel_of = [&](const scene::ShadowCascades& c) {
+        const glm::vec4 clip = c.tiles[i].view_proj * glm::vec4(probe, 1.0f);
+        return (glm::vec2(clip) * 0.5f + 0.5f) * static_cast<float>(c.tiles[i].size);
+      };
+      const glm::vec2 shift = texel_of(*after) - texel_of(*before);
+      const glm::ivec2 whole(glm::round(shift));
+      EXPECT_NEAR(glm::length(shift - glm::vec2(whole)), 0.0f, 0.02f) << "cascade " << i;
+      const int tile = before->tiles[i].size;
+      const glm::ivec2 origin = before->tiles[i].origin;
+      int compared = 0, differ = 0;
+      for (int y = 2; y < tile - 2; ++y)
+        for (int x = 2; x < tile - 2; ++x) {
+          const int xa = x + whole.x, ya = y + whole.y;
+          if (xa < 2 || ya < 2 || xa >= tile - 2 || ya >= tile - 2) continue;
+          // Rows of MaskImage run top to bottom: texel row y of the map is image row height - 1 - y.
+          auto at = [&](const metrics::MaskImage& m, int tx, int ty) {
+            return m.pixels[static_cast<size_t>((m.height - 1 - (origin.y + ty)) * m.width + origin.x + tx)];
+          };
+          ++compared;
+          differ += std::abs(at(map_after, xa, ya) - at(map_before, x, y)) > 1e-6f;
+        }
+      ASSERT_GT(compared, tile * tile / 2);
+      EXPECT_LE(differ, compared / 1000) << "cascade " << i << " after a " << move << " m move: " << differ << " of "
+                                         << compared << " texels changed beyond the whole-texel shift";
+    }
+  }
+}
