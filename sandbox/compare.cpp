@@ -23,6 +23,7 @@ Status configure_partner(technique::TechniqueSession& secondary, technique::Tech
   if (!secondary.has_scene()) secondary.set_scene(primary.scene());
   if (Status s = secondary.resize(width, height); !s) return s;
   if (Status s = secondary.set_shadow_size(primary.settings().shadow_size); !s) return s;
+  if (Status s = secondary.set_cascades(primary.cascades()); !s) return s;
   secondary.compile_options().no_reuse = primary.compile_options().no_reuse;
   secondary.compile_options().extended_lifetimes = primary.compile_options().extended_lifetimes;
   secondary.executor().options().immediate = primary.executor().options().immediate;

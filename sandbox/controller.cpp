@@ -67,6 +67,13 @@ Status SandboxController::load_scene(const std::string& name_or_path) {
   for (technique::TechniqueSession* s : partners()) s->set_scene(*loaded);
   scene_name_ = name_or_path;
   staging_ = staging;
+  if (loaded->light.type != scene::LightType::directional && primary_->cascades().count > 1) {
+    scene::CascadeSettings one = primary_->cascades();
+    one.count = 1;
+    if (Status s = set_cascades(one); !s) return s;
+    return note(make_error("cascades are for directional lights: back to one shadow map for this scene's " +
+                           std::string(scene::light_type_name(loaded->light.type)) + " light", ErrorKind::bad_input));
+  }
   return note({});
 }
 
@@ -193,6 +200,13 @@ Status SandboxController::set_shadow_size(int texels) {
   if (Status s = primary_->set_shadow_size(texels); !s) return note(s);
   for (technique::TechniqueSession* p : partners())
     if (Status s = p->set_shadow_size(texels); !s) return note(s);
+  return note({});
+}
+
+Status SandboxController::set_cascades(const scene::CascadeSettings& cascades) {
+  if (Status s = primary_->set_cascades(cascades); !s) return note(s);
+  for (technique::TechniqueSession* p : partners())
+    if (Status s = p->set_cascades(cascades); !s) return note(s);
   return note({});
 }
 
@@ -517,6 +531,7 @@ Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) 
   const graph::CompileOptions options = primary_->compile_options();
   const bool immediate = primary_->executor().options().immediate;
   const int shadow_size = old.settings().shadow_size;
+  const scene::CascadeSettings cascades = old.cascades();
   secondary_.reset();
   third_.reset();
   primary_.reset();
@@ -531,6 +546,7 @@ Status SandboxController::rebuild_sessions(const std::function<Status()>& swap) 
   primary_->executor().options().immediate = immediate;
   if (Status s = primary_->resize(width_, height_); !s) return note(s);
   if (Status s = primary_->set_shadow_size(shadow_size); !s) return note(s);
+  if (Status s = primary_->set_cascades(cascades); !s) return note(s);
   const bool still_there = registry_.find(technique) != nullptr;
   if (!still_there && registry_.names().empty())
     return note(make_error("no techniques are registered after the plugin reload", ErrorKind::internal));

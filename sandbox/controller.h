@@ -93,6 +93,9 @@ class SandboxController {
   void set_light_frozen(bool frozen) { light_frozen_ = frozen; }
   bool light_frozen() const { return light_frozen_; }
   Status set_shadow_size(int texels);
+  // Cascaded shadow maps (scene/cascades.h), in every session; a scene whose light is not
+  // directional gets one cascade back (with a note), since its frames would be refused.
+  Status set_cascades(const scene::CascadeSettings& cascades);
 
   // --- technique and parameters -------------------------------------------------------------
   std::vector<std::string> technique_names() const { return registry_.names(); }

@@ -1,6 +1,7 @@
 #include "sandbox/options.h"
 
 #include "cli/options/args.h"
+#include "cli/options/cascade_option.h"
 #include "cli/options/plugin_option.h"
 #include "cli/options/scene_option.h"
 
@@ -8,7 +9,7 @@ namespace penumbra::sandbox {
 
 namespace {
 const std::vector<cli::OptionSpec>& specs() {
-  static const std::vector<cli::OptionSpec> s = cli::with_scene_options({
+  static const std::vector<cli::OptionSpec> s = cli::with_cascade_options(cli::with_scene_options({
       {"scene", true, false, "NAME|FILE", "built-in scene or glTF file (default showcase)"},
       {"technique", true, false, "T", "technique to start with (default sspcss, a contact-hardening one)"},
       {"size", true, false, "WxH", "window / frame size in pixels (default 1280x800)"},
@@ -25,7 +26,7 @@ const std::vector<cli::OptionSpec>& specs() {
        "rewrite FILE every frame with the window's state as JSON: widgets, open popup, parameters "
        "(for tests that drive the window with real input)"},
       cli::plugin_dir_option_spec(),
-  });
+  }));
   return s;
 }
 }  // namespace
@@ -74,6 +75,9 @@ Result<SandboxOptions> parse_sandbox_options(const std::vector<std::string>& arg
     if (!n) return n.error();
     o.shadow_size = *n;
   }
+  auto cascades = cli::parse_cascade_options(*args);
+  if (!cascades) return cascades.error();
+  o.cascades = *cascades;
   auto staging = cli::parse_scene_options(*args);
   if (!staging) return staging.error();
   o.staging = staging->staging;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/cascades.h"
 #include "scene/staging.h"
 #include "util/error.h"
 
@@ -20,6 +21,7 @@ struct SandboxOptions {
   std::string technique;  // empty: the first registered
   int width = 1280, height = 800;  // pixels
   std::optional<int> shadow_size;  // texels
+  scene::CascadeSettings cascades;  // --cascades, --cascade-split, --cascade-blend, --cascade-tint
   std::string script;
   std::string screenshot;
   std::string context;  // empty: glfw

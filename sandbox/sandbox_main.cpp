@@ -91,6 +91,7 @@ int sandbox_main(int argc, char** argv, const ExtraTechniques& extra) {
   controller.set_staging(o.staging);
   if (o.shadow_size)
     if (Status s = controller.session().set_shadow_size(*o.shadow_size); !s) return fail(s.error());
+  if (Status s = controller.session().set_cascades(o.cascades); !s) return fail(s.error());
   if (Status s = controller.init(o.scene, o.technique, o.width, o.height); !s) return fail(s.error());
 
   if ((*context)->window()) return run_window(**context, controller, {script, o.screenshot, o.max_fps, o.state_file});

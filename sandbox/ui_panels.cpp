@@ -160,6 +160,26 @@ void scene_panel(SandboxController& c, UiState& ui) {
                       cam.position.z, glm::degrees(cam.yaw), glm::degrees(cam.pitch));
 }
 
+// Cascaded shadow maps (scene/cascades.h) for a directional light: how many, where the splits
+// fall, the blend band, and the debug tint of the cascade each pixel reads; live, no recompile.
+void cascade_controls(SandboxController& c, UiState& ui) {
+  scene::CascadeSettings s = c.session().cascades();
+  bool changed = ImGui::SliderInt("cascades", &s.count, 1, scene::kMaxCascades);
+  probe_item(ui.probe, "cascades");
+  tooltip("shadow-map cascades over the camera's view range; they share the map's texels (4 of a 2048 map are "
+          "1024 each)");
+  if (s.count > 1) {
+    changed |= ImGui::SliderFloat("split lambda", &s.split_lambda, 0.0f, 1.0f, "%.2f");
+    tooltip("where the splits fall: 0 evenly spaced, 1 logarithmic (even texel density in perspective)");
+    changed |= ImGui::SliderFloat("blend band", &s.blend, 0.0f, 0.5f, "%.2f");
+    tooltip("band (fraction of a cascade's half side) over which it dithers into the next");
+    changed |= ImGui::Checkbox("tint cascades", &s.tint);
+    probe_item(ui.probe, "tint cascades");
+    tooltip("debug view: the image tinted by the cascade each pixel reads (red, green, blue, yellow from the nearest)");
+  }
+  if (changed) (void)c.set_cascades(s);
+}
+
 void light_panel(SandboxController& c, UiState& ui) {
   const bool open = ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen);
   probe_item(ui.probe, "Light");
@@ -197,6 +217,7 @@ void light_panel(SandboxController& c, UiState& ui) {
       if (selectable(ui.probe, "shadow map", std::to_string(s), s == shadow)) (void)c.set_shadow_size(s);
     ImGui::EndCombo();
   }
+  if (l.type == scene::LightType::directional) cascade_controls(c, ui);
   ImGui::Checkbox("light gizmo", &c.debug_views().light_gizmo);
   probe_item(ui.probe, "light gizmo toggle");
   tooltip("a sky disk in the viewport's corner (zenith at the centre, up = where the camera looks): drag the "
