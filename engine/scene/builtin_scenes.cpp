@@ -253,12 +253,12 @@ const std::vector<ProceduralParam> kAvenueParams = {
 
 Status check_avenue(const Params& p) {
   if (!(p("length") >= 10.0f && p("length") <= 2000.0f))
-    return make_error("avenue: length must be in [10, 2000] metres", ErrorKind::bad_input);
+    return make_error("length must be in [10, 2000] metres", ErrorKind::bad_input);
   if (!(p("post_spacing") >= 1.0f) || p("length") / p("post_spacing") > 2000.0f)
-    return make_error("avenue: post_spacing must be at least 1 metre and length / post_spacing at most 2000",
+    return make_error("post_spacing must be at least 1 metre and length / post_spacing at most 2000",
                       ErrorKind::bad_input);
   if (!(p("post_height") >= 0.5f && p("post_height") <= 50.0f))
-    return make_error("avenue: post_height must be in [0.5, 50] metres", ErrorKind::bad_input);
+    return make_error("post_height must be in [0.5, 50] metres", ErrorKind::bad_input);
   return {};
 }
 

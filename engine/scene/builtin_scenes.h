@@ -12,9 +12,9 @@
 //              low wall; `palm_height`, `frond_count`, `frond_length`.
 //   room       a closed room lit by a lamp (a point light inside the scene) hanging from the
 //              ceiling: table, ball, chair, cabinet and shelf; `lamp_height`, `light_size`.
+//   showcase   (default) fence, ball, poles and colonnade on one ground.
 //   avenue     a 200 m street under the sun: lamp posts along both sides, a pergola and benches
 //              near the camera at eye height (casters from 1 m to 200 m: cascades); `length`.
-//   showcase   (default) all of the above on one ground.
 //
 //   Result<Scene> s = make_builtin_scene("ball", {{"ball_height", 1.5f}});
 #include <map>

@@ -138,6 +138,31 @@ TEST(BuiltinScenes, TheRoomIsLitByALampInsideIt) {
   }
 }
 
+// avenue: a street long enough for cascades (casters from about 1 m to `length` ahead of the camera,
+// inside the camera's far plane), under a directional light; lengths and spacings that cannot be
+// built are refused with the limit.
+TEST(BuiltinScenes, TheAvenueRunsFarAheadOfTheCamera) {
+  Result<scene::Scene> avenue = scene::make_builtin_scene("avenue");
+  ASSERT_TRUE(avenue) << avenue.error().to_string();
+  EXPECT_EQ(avenue->light.type, scene::LightType::directional);
+  const glm::vec3 forward = avenue->camera.forward();
+  EXPECT_GT(glm::dot(avenue->bounds.min - avenue->camera.position, forward) +
+                glm::dot(avenue->bounds.max - avenue->camera.position, forward), 150.0f);
+  EXPECT_GE(avenue->camera.far_plane, 200.0f);
+  Result<scene::Scene> short_one = scene::make_builtin_scene("avenue", {{"length", 40.0f}});
+  ASSERT_TRUE(short_one);
+  EXPECT_LT(short_one->bounds.extent().z, avenue->bounds.extent().z);
+  const std::pair<scene::ProceduralParams, const char*> bad[] = {
+      {{{"length", 5.0f}}, "length must be in [10, 2000]"},
+      {{{"post_spacing", 0.0f}}, "post_spacing must be at least 1"},
+      {{{"post_height", 0.0f}}, "post_height must be in [0.5, 50]"}};
+  for (const auto& [params, expected] : bad) {
+    Result<scene::Scene> s = scene::make_builtin_scene("avenue", params);
+    ASSERT_FALSE(s) << expected;
+    EXPECT_NE(s.error().to_string().find(expected), std::string::npos) << s.error().to_string();
+  }
+}
+
 // load_scene (the CLI's --scene): a built-in's parameters after ':' as k=v,k=v; malformed or
 // unknown ones are errors naming what is wrong.
 TEST(BuiltinScenes, LoadSceneTakesParametersAfterAColon) {
