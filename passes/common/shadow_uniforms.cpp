@@ -10,9 +10,6 @@
 namespace penumbra::passes {
 namespace {
 
-// Every built-in technique reads six faces; a plugin pass that refuses is told which do.
-const char* kSixFaceTechniques = "hard, pcf, pcss, pmchss, mpg, sspcss and esm";
-
 scene::Bounds frame_bounds(const exec::FrameInputs& frame) {
   return frame.scene ? frame.scene->cpu().bounds : scene::Bounds{};
 }
@@ -72,7 +69,7 @@ Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame,
     if (six_faces == SixFaces::refused)
       return make_error(std::string("a point light inside the scene bounds needs a shadow map in every direction, "
                                     "which this pass does not read (techniques that do: ") +
-                            kSixFaceTechniques + "; or move the light outside the bounds)",
+                            kTiledMapTechniques + "; or move the light outside the bounds)",
                         ErrorKind::bad_input);
     return set_face_uniforms(p, frame);
   }
@@ -88,7 +85,7 @@ Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame,
     if (six_faces == SixFaces::refused)
       return make_error(std::string("cascaded shadow maps keep each cascade in a tile of the map, which this pass "
                                     "does not read (techniques that do: ") +
-                            kCascadeTechniques + "; or use one cascade)",
+                            kTiledMapTechniques + "; or use one cascade)",
                         ErrorKind::bad_input);
     set_cascade_uniforms(p, frame);
   }

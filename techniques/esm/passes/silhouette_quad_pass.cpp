@@ -61,7 +61,9 @@ class SilhouetteQuadPass final : public exec::PassImpl {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glEnable(GL_SCISSOR_TEST);
-    for (const EsmFace& f : views->faces) {
+    for (size_t i = 0; i < views->faces.size(); ++i) {
+      const EsmFace& f = views->faces[i];
+      prog.set("u_face", static_cast<int>(i));  // its texel size (esm_texel_world)
       glViewport(f.origin.x, f.origin.y, f.size, f.size);
       glScissor(f.origin.x, f.origin.y, f.size, f.size);
       prog.set("u_view_proj", f.view_proj);

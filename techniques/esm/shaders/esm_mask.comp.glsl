@@ -79,7 +79,9 @@ float litness(vec4 texel, float depth, float z) {
 bool contradicts(vec4 texel, float depth, float z) { return has_quad(texel) && texel.r >= 1.0 && z <= depth; }
 
 float visibility(ivec2 pixel, vec3 world, vec3 normal) {
-  int face = esm_face(world);
+  // Cascades: the one the other techniques read this receiver in (none holds it: the last, whose
+  // coordinate is then outside its tile, lit).
+  int face = kCascades > 1 ? min(cascade_of(world), kCascades - 1) : esm_face(world);
   vec4 c = esm_map_coord(face, world);
   if (c.w == 0.0 || c.z < 0.0 || c.z > 1.0) return 1.0;  // outside the map: lit
   float z = esm_biased_depth(c.z, u_depth_bias);

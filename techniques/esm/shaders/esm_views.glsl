@@ -1,18 +1,20 @@
 // The extended shadow map's views (passes/esm_views.h): one face for directional and spot
-// lights, six for a point light, each a square tile of the map. Set by set_esm_view_uniforms().
+// lights, six for a point light, two to four cascades, each a square tile of the map. Set by
+// set_view_uniforms() (passes/esm_pass_common.h).
 #include "common/light_faces.glsl"
 uniform mat4 u_face_view_proj[6];  // world -> clip of each face
-uniform vec4 u_face_rect[6];       // tile origin (texels) xy, tile side (texels) z
-uniform int u_face_count;          // 1 or 6
+uniform vec4 u_face_rect[6];       // tile origin (texels) xy, tile side (texels) z; w: world size of
+                                   // a texel (ortho), or of a texel at distance 1 (perspective)
+uniform int u_face_count;          // 1, 2-4 cascades, or 6
 uniform vec4 u_esm_light;          // homogeneous light: (position, 1), or (-direction, 0)
 uniform int u_esm_ortho;           // 1: orthographic (directional)
 uniform float u_esm_near;          // world units
 uniform float u_esm_far;
-uniform float u_esm_texel_scale;   // world size of a texel: ortho this; perspective distance x this
 
 // The face a world position is shadowed through: that of its direction from a point light
-// (light_faces.glsl), the only face otherwise (esm_face_of() on the CPU).
-int esm_face(vec3 world) { return u_face_count == 1 ? 0 : light_face(world - u_esm_light.xyz); }
+// (light_faces.glsl), the only face of one view (esm_face_of() on the CPU). Cascades: the mask
+// pass picks them with shadow_common.glsl's cascade_of(), as the other techniques do.
+int esm_face(vec3 world) { return u_face_count == 6 ? light_face(world - u_esm_light.xyz) : 0; }
 
 // (x, y) in texels of the whole map (texel centres at +0.5) and z the window depth [0, 1] of a
 // world position seen through face `face`; w = 1 inside the face's frustum, 0 outside.
@@ -37,12 +39,15 @@ float esm_light_distance(float window_depth) {
 // the far end is 1000x one at the near end (2e-4 would be 0.3 m at 3 m): there it means that
 // fraction of the depth range, (far - near) x bias, at any distance.
 float esm_biased_depth(float window_depth, float bias) {
-  if (u_face_count == 1) return window_depth - bias;
+  if (u_face_count != 6) return window_depth - bias;  // one view or cascades: a window-depth bias
   float d = esm_light_distance(window_depth) - bias * (u_esm_far - u_esm_near);
   float n = u_esm_near, f = u_esm_far;
   float ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * max(d, n));
   return ndc * 0.5 + 0.5;
 }
 
-// World size of one texel at light distance d.
-float esm_texel_world(float d) { return u_esm_ortho == 1 ? u_esm_texel_scale : d * u_esm_texel_scale; }
+// World size of one texel of face `face` at light distance d.
+float esm_texel_world(int face, float d) {
+  float scale = u_face_rect[face].w;
+  return u_esm_ortho == 1 ? scale : d * scale;
+}

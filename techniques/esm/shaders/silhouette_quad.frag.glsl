@@ -25,13 +25,14 @@ flat in vec3 v_front_depth;  // the front plane's window depth: dot(xy, tile tex
 uniform vec2 u_tile_origin;       // texels
 uniform sampler2D u_depth;        // the depth pass's (biased) depth, whole map
 uniform float u_hidden_tolerance; // texel footprints (world size of a texel at the edge's distance)
+uniform int u_face;               // the face (tile) being drawn
 
 // The texel's surface (depth attachment) is nearer the light than window depth `depth` by more
 // than the tolerance.
 bool nearer_surface(float depth) {
   float occluder = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
   float distance = esm_light_distance(depth);
-  return esm_light_distance(occluder) < distance - u_hidden_tolerance * esm_texel_world(distance);
+  return esm_light_distance(occluder) < distance - u_hidden_tolerance * esm_texel_world(u_face, distance);
 }
 layout(location = 0) out vec2 o_esm;
 
