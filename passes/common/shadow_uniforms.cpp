@@ -10,6 +10,13 @@
 namespace penumbra::passes {
 namespace {
 
+// A tile of the map as shadow_common.glsl's rectangles hold it: origin (xy) and side (z) in map
+// UV, `w` what the array adds.
+glm::vec4 tile_rect_uv(const scene::LightFace& tile, int map_size, float w) {
+  const float map = static_cast<float>(map_size);
+  return glm::vec4(glm::vec2(tile.origin) / map, static_cast<float>(tile.size) / map, w);
+}
+
 scene::Bounds frame_bounds(const exec::FrameInputs& frame) {
   return frame.scene ? frame.scene->cpu().bounds : scene::Bounds{};
 }
@@ -22,15 +29,23 @@ Status set_face_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
   return {};
 }
 
+// shadow_common.glsl's u_cascade_* (tile rectangles in map UV, each square's world width).
+void set_cascade_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
+  const scene::ShadowCascades& c = frame.cascades;
+  for (int i = 0; i < c.count; ++i) {
+    p.set(gl::uniform_element("u_cascade_view_proj", i).c_str(), c.tiles[i].view_proj);
+    p.set(gl::uniform_element("u_cascade_rect", i).c_str(), tile_rect_uv(c.tiles[i], frame.shadow_size, c.width_world[i]));
+  }
+  p.set("u_cascade_margin", scene::kCascadeMarginOfHalfSide);
+  p.set("u_cascade_blend", c.blend);
+}
+
 }  // namespace
 
 void set_light_face_uniforms(const gl::Program& p, const scene::PointLightFaces& faces, int map_size) {
-  const float map = static_cast<float>(map_size);
-  for (int i = 0; i < 6; ++i) {  // tile rectangles in map UV
-    const scene::LightFace& f = faces.faces[i];
-    p.set(gl::uniform_element("u_light_face_view_proj", i).c_str(), f.view_proj);
-    p.set(gl::uniform_element("u_light_face_rect", i).c_str(),
-          glm::vec4(glm::vec2(f.origin) / map, static_cast<float>(f.size) / map, 0.0f));
+  for (int i = 0; i < 6; ++i) {
+    p.set(gl::uniform_element("u_light_face_view_proj", i).c_str(), faces.faces[i].view_proj);
+    p.set(gl::uniform_element("u_light_face_rect", i).c_str(), tile_rect_uv(faces.faces[i], map_size, 0.0f));
   }
   p.set("u_light_near", faces.near_plane);
   p.set("u_light_far", faces.far_plane);
@@ -38,24 +53,6 @@ void set_light_face_uniforms(const gl::Program& p, const scene::PointLightFaces&
   p.set("u_light_frustum_width", 2.0f * faces.tan_half_fov);
   p.set("u_shadow_texel", 1.0f / static_cast<float>(faces.tile));
 }
-
-namespace {
-
-// shadow_common.glsl's u_cascade_* (tile rectangles in map UV, each square's world width).
-void set_cascade_uniforms(const gl::Program& p, const exec::FrameInputs& frame) {
-  const scene::ShadowCascades& c = frame.cascades;
-  const float map = static_cast<float>(frame.shadow_size);
-  for (int i = 0; i < c.count; ++i) {
-    const scene::LightFace& t = c.tiles[i];
-    p.set(gl::uniform_element("u_cascade_view_proj", i).c_str(), t.view_proj);
-    p.set(gl::uniform_element("u_cascade_rect", i).c_str(),
-          glm::vec4(glm::vec2(t.origin) / map, static_cast<float>(t.size) / map, c.width_world[i]));
-  }
-  p.set("u_cascade_margin", scene::kCascadeMarginOfHalfSide);
-  p.set("u_cascade_blend", c.blend);
-}
-
-}  // namespace
 
 Status set_shadow_uniforms(const gl::Program& p, const exec::FrameInputs& frame, SixFaces six_faces) {
   const scene::ShadowFrustum& s = frame.shadow;
