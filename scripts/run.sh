@@ -11,10 +11,15 @@ if [ -z "$build" ]; then
   cmake --build --preset release -j "$(nproc)"
   build=build/release
 fi
+# The showcase unless the command line names a scene itself.
+scene=(--scene showcase)
+for arg in "$@"; do
+  case $arg in --scene|--scene=*) scene=() ;; esac
+done
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-  exec "$build/sandbox/penumbra-sandbox" --scene showcase "$@"
+  exec "$build/sandbox/penumbra-sandbox" "${scene[@]}" "$@"
 fi
-echo "no display: rendering the showcase scene headless into out/ (the sandbox needs a display)"
+echo "no display: rendering ${scene[1]:-the given scene} headless into out/ (the sandbox needs a display)"
 "$build/cli/penumbra" info
-"$build/cli/penumbra" render --scene showcase --all-techniques --out-dir out --set method=raytraced "$@"
+"$build/cli/penumbra" render "${scene[@]}" --all-techniques --out-dir out --set method=raytraced "$@"
 ls out/

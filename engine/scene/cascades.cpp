@@ -77,7 +77,7 @@ Result<ShadowCascades> shadow_cascades(const Light& light, const ShadowFrustum& 
   if (settings.count == 1) return out;
   if (light.type != LightType::directional)
     return make_error("cascaded shadow maps are for directional lights; this light is a " +
-                          std::string(light_type_name(light.type)) + " light (use cascades=1)",
+                          std::string(light_type_name(light.type)) + " light (use one cascade)",
                       ErrorKind::bad_input);
   out.count = settings.count;
   const int tile = map_size / 2;
