@@ -14,6 +14,10 @@ struct Receiver {
   vec2 dz_duv;
   vec3 world;   // receiver_at(): its world position and unit normal, for add_receiver_plane()
   vec3 normal;
+  // Six faces (add_receiver_plane): the receiver's distance and unit direction from the light,
+  // and that direction's tangent basis, the frame shadow_tap() places every tap in.
+  float light_dist;
+  vec3 light_dir, light_t, light_b;
 };
 
 // Solves [dx.xy dy.xy] g = [dx.z dy.z] for the depth gradient g = d(window depth)/d(uv) of the
@@ -82,9 +86,16 @@ int receiver_at(sampler2D depths, sampler2D normals, ivec2 pixel, out Receiver r
 }
 
 // The receiver plane of a receiver (only where taps will be taken: it reads the neighbours' depths).
-// Six faces need none: shadow_tap() meets the receiver's tangent plane along each tap's ray.
+// Six faces need none: shadow_tap() meets the receiver's tangent plane along each tap's ray; they
+// get the frame the taps are placed in instead, once per receiver rather than per tap.
 void add_receiver_plane(sampler2D depths, ivec2 pixel, inout Receiver r) {
-  if (kLightFaces != 1) return;
+  if (kLightFaces != 1) {
+    vec3 to = r.world - u_light_pos;
+    r.light_dist = max(length(to), 1e-6);
+    r.light_dir = to / r.light_dist;
+    direction_basis(r.light_dir, r.light_t, r.light_b);
+    return;
+  }
   r.dz_duv = receiver_depth_gradient(depths, pixel, r.world, r.normal, r.coord);
 }
 
@@ -118,10 +129,8 @@ float receiver_depth_at(Receiver r, vec2 offset_uv, float bias) {
 // that shadow_tap() places offsets in (its inverse).
 vec2 shadow_offset_to(Receiver r, vec3 world) {
   if (kLightFaces == 1) return shadow_coord(world).xy - r.coord.xy;
-  vec3 w0 = normalize(r.world - u_light_pos), tx, ty;
-  direction_basis(w0, tx, ty);
   vec3 w = world - u_light_pos;
-  return vec2(dot(w, tx), dot(w, ty)) / (max(dot(w, w0), 1e-6) * u_light_frustum_width);
+  return vec2(dot(w, r.light_t), dot(w, r.light_b)) / (max(dot(w, r.light_dir), 1e-6) * u_light_frustum_width);
 }
 
 // Cascades: a map UV kept inside the invocation's cascade, one texel from its tile's edges, so a
@@ -157,15 +166,12 @@ ShadowTap shadow_tap(Receiver r, vec2 offset_uv, float bias) {
     t.distance_scale = 1.0;
     return t;
   }
-  vec3 to = r.world - u_light_pos;
-  float d = max(length(to), 1e-6);
-  vec3 w0 = to / d, tx, ty;
-  direction_basis(w0, tx, ty);
-  vec3 w = normalize(w0 + (tx * offset_uv.x + ty * offset_uv.y) * u_light_frustum_width);
+  float d = r.light_dist;
+  vec3 w = normalize(r.light_dir + (r.light_t * offset_uv.x + r.light_b * offset_uv.y) * u_light_frustum_width);
   float nw = dot(r.normal, w);  // negative: the receiver faces the light
   // The plane's distance along w, within [d / 2, 2 d]: a grazing receiver's plane passes near the
   // light, and unbounded it would lift taps over casters between (like the one-view gradient cap).
-  float along = nw < -1e-3 ? clamp(dot(r.normal, to) / nw, 0.5 * d, 2.0 * d) : d;
+  float along = nw < -1e-3 ? clamp(dot(r.normal, r.world - u_light_pos) / nw, 0.5 * d, 2.0 * d) : d;
   // At grazing incidence the plane's change over a texel grows without bound; past 5 % of the
   // distance it would lift the receiver over casters near it (a light inside a shell).
   float tan_incidence = sqrt(max(1.0 - nw * nw, 0.0)) / max(-nw, 1e-3);
@@ -174,7 +180,6 @@ ShadowTap shadow_tap(Receiver r, vec2 offset_uv, float bias) {
   vec3 c = face_shadow_coord(face, u_light_pos + w * along);
   t.uv = c.xy;
   t.ref = c.z - bias;
-  vec3 a = abs(w);
-  t.distance_scale = 1.0 / max(max(a.x, a.y), a.z);
+  t.distance_scale = axis_to_ray_scale_of(w);
   return t;
 }

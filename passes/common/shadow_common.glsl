@@ -132,10 +132,13 @@ void direction_basis(vec3 d, out vec3 tangent, out vec3 bitangent) {
 // A distance from the light along the view's axis (light_distance() of a depth read through
 // shadow_coord(world)) times this is the distance along the ray to `world`: 1 for one view; for
 // six faces, 1 / the major component of the unit direction (a face's depth is along its axis).
-float axis_to_ray_scale(vec3 world) {
-  if (kLightFaces == 1) return 1.0;
-  vec3 a = abs(normalize(world - u_light_pos));
+// For a unit direction from the light: 1 / its major component.
+float axis_to_ray_scale_of(vec3 unit_direction) {
+  vec3 a = abs(unit_direction);
   return 1.0 / max(max(a.x, a.y), a.z);
+}
+float axis_to_ray_scale(vec3 world) {
+  return kLightFaces == 1 ? 1.0 : axis_to_ray_scale_of(normalize(world - u_light_pos));
 }
 
 // Distance from the light (world units) of a world position in the sense of light_distance():
