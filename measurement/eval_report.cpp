@@ -30,6 +30,7 @@ std::string eval_report_json(const EvalReport& report) {
     if (flicker) {
       row["temporal_change"] = r.temporal_change;
       row["flicker"] = r.flicker;
+      row["temporal_error"] = r.temporal_error;
     }
     rows.push_back(std::move(row));
   }
@@ -37,6 +38,7 @@ std::string eval_report_json(const EvalReport& report) {
   if (flicker) {
     j["flicker_motion"] = report.flicker_motion;
     j["flicker_frames"] = report.flicker_frames;
+    j["flicker_match"] = report.flicker_match;
     j["flicker_reference"] = report.flicker_reference;
   }
   j["rows"] = rows;
@@ -51,7 +53,7 @@ std::string eval_report_table(const EvalReport& report) {
   for (const EvalRow& r : report.rows) width = std::max(width, static_cast<int>(std::min<size_t>(r.technique.size(), 200)));
   const bool flicker = !report.flicker_motion.empty();
   std::snprintf(line, sizeof line, "%-*s %9s %13s %8s %13s %9s %9s %7s %9s %10s%s\n", width, "technique", "RMSE",
-                "RMSE penumbra", "pixels", "RMSE geo-edge", "MAE", "max", "SSIM", "edge", "ms", flicker ? "   flicker" : "");
+                "RMSE penumbra", "pixels", "RMSE geo-edge", "MAE", "max", "SSIM", "edge", "ms", flicker ? "    flicker  t-error" : "");
   out += line;
   std::string unreliable;
   for (const EvalRow& r : report.rows) {
@@ -69,7 +71,7 @@ std::string eval_report_table(const EvalReport& report) {
                   e.rmse, penumbra, e.penumbra_pixels, geo, e.mae, e.max_error, e.ssim, e.edge_error, r.gpu_ms);
     out += line;
     if (flicker) {
-      std::snprintf(line, sizeof line, " %+10.5f", r.flicker);
+      std::snprintf(line, sizeof line, " %+10.5f %8.5f", r.flicker, r.temporal_error);
       out += line;
     }
     out += "\n";

@@ -5,9 +5,10 @@
 //    "rmse_geometric_edge": ... | null, "geometric_edge_pixels":..., "mae":..., "max_error":...,
 //    "ssim":..., "edge_error":..., "gpu_ms":...}]}
 // The pixel classes behind the penumbra and geometric-edge columns: metrics/pixel_classes.h.
-// With --flicker, the top level adds "flicker_motion", "flicker_frames" and "flicker_reference"
-// (the reference's own temporal change) and each row "temporal_change" and "flicker" (its
-// temporal change minus the reference's).
+// With --flicker, the top level adds "flicker_motion", "flicker_frames", "flicker_match" (pixels;
+// 0: bilinear reprojection) and "flicker_reference"
+// (the reference's own temporal change) and each row "temporal_change", "flicker" (its
+// temporal change minus the reference's) and "temporal_error" (metrics::temporal_error).
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct EvalRow {
   double gpu_ms = 0.0;  // median over the measured frames of the technique's own passes
   double temporal_change = 0.0;  // --flicker: mean |change| between reprojected frames
   double flicker = 0.0;          // temporal_change minus the reference's on the same frames
+  double temporal_error = 0.0;   // mean |its change - the reference's change| per pixel
 };
 
 struct EvalReport {
@@ -29,6 +31,7 @@ struct EvalReport {
   std::vector<EvalRow> rows;
   std::string flicker_motion;      // "pan" or "light"; empty: no flicker measured
   int flicker_frames = 0;
+  float flicker_match = 0.0f;      // metrics::Reprojection::match_within
   double flicker_reference = 0.0;  // the reference's temporal change
 };
 

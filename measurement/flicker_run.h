@@ -21,6 +21,7 @@ struct FlickerSettings {
   std::string motion = "pan";      // "pan" or "light"
   int frames = 8;
   float degrees_per_frame = 0.25f;
+  metrics::Reprojection reprojection;  // how a frame is compared with the previous one
 };
 
 Status check_flicker_motion(const std::string& motion);

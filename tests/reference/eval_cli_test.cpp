@@ -186,7 +186,8 @@ TEST(EvalCli, TechniquesWithTheirOwnSettingsAreRowsOfTheirOwn) {
   EXPECT_NE(bad.err.find("pcf:box_size=99"), std::string::npos) << bad.err;
 }
 
-// --flicker: each row's temporal change over the motion and its excess over the reference's.
+// --flicker: each row's temporal change over the motion, its excess over the reference's and its
+// temporal error (bounded by the two changes: |a - b| <= |a| + |b| per pixel).
 TEST(EvalCli, FlickerIsTheTemporalChangeAboveTheReferences) {
   const fs::path d = out_dir();
   auto flicker = [&](const std::string& step, const std::string& name) {
@@ -205,12 +206,30 @@ TEST(EvalCli, FlickerIsTheTemporalChangeAboveTheReferences) {
     const double change = row["temporal_change"];
     EXPECT_GT(change, 0.0) << row["technique"];  // a 2-degree pan moves 64x48 pixels over every edge
     EXPECT_NEAR(row["flicker"].get<double>(), change - reference, 1e-9);
+    const double error = row["temporal_error"];
+    EXPECT_GT(error, 0.0) << row["technique"];
+    EXPECT_LE(error, change + reference + 1e-9) << row["technique"];
   }
   // Barely moving, the same surface points keep their values: no change for anyone.
   const nlohmann::json still = flicker("0.001", "still.json");
   EXPECT_LT(still["flicker_reference"].get<double>(), 0.005);
-  for (const auto& row : still["rows"]) EXPECT_LT(row["temporal_change"].get<double>(), 0.005) << row["technique"];
-  for (const char* bad : {"--flicker wiggle", "--flicker-frames 4", "--flicker pan --flicker-frames 1"}) {
+  for (const auto& row : still["rows"]) {
+    EXPECT_LT(row["temporal_change"].get<double>(), 0.005) << row["technique"];
+    EXPECT_LT(row["temporal_error"].get<double>(), 0.005) << row["technique"];
+  }
+  EXPECT_EQ(moving["flicker_match"], 0.0);
+  // Matched pixels only: fewer compared, each without resampling; the same bounds hold.
+  const fs::path matched_json = d / "matched.json";
+  EvalRun matched = run_eval("--scene ball --size 64x48 --rays 16 --frames 1 --techniques hard --flicker pan "
+                             "--flicker-frames 3 --flicker-step 2 --flicker-match 0.25 --json " + matched_json.string());
+  ASSERT_EQ(matched.code, 0) << matched.err;
+  const nlohmann::json m = nlohmann::json::parse(std::ifstream(matched_json));
+  EXPECT_EQ(m["flicker_match"], 0.25);
+  const auto& row = m["rows"][0];
+  EXPECT_NEAR(row["flicker"].get<double>(), row["temporal_change"].get<double>() - m["flicker_reference"].get<double>(), 1e-9);
+  EXPECT_GE(row["temporal_error"].get<double>(), 0.0);
+  for (const char* bad : {"--flicker wiggle", "--flicker-frames 4", "--flicker pan --flicker-frames 1",
+                          "--flicker-match 0.1", "--flicker pan --flicker-match 0.7", "--flicker pan --flicker-match 0"}) {
     EvalRun r = run_eval(std::string("--scene ball --techniques hard ") + bad);
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_NE(r.err.find("flicker"), std::string::npos) << r.err;
