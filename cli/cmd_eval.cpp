@@ -174,8 +174,10 @@ Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::
   };
   if (!o.heatmaps.empty()) {
     if (Status s = out.create_directory(o.heatmaps); !s) return out.not_written(s.error());
+    // The pixels the statistics judged: receivers outside the light show as background.
+    const metrics::CoverageMask judged = classes.classes.empty() ? coverage : metrics::judged_pixels(classes);
     for (size_t i = 0; i < masks.size(); ++i) {
-      auto map = metrics::error_heat_map(masks[i], reference, coverage, kHeatMapScale);
+      auto map = metrics::error_heat_map(masks[i], reference, judged, kHeatMapScale);
       if (!map) return map.error();
       const std::string path = o.heatmaps + "/" + report.scene + "_" + file_label(report.rows[i].technique) + "_error.png";
       if (Status s = write(path, [&](const std::string& tmp) { return metrics::write_png(tmp, *map); }); !s) return s;

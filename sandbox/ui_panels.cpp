@@ -437,7 +437,8 @@ void compare_panel(SandboxController& c, UiState& ui) {
     probe_item(ui.probe, "pixel classes");
     tooltip("what the statistics are split by, from A's G-buffer and B's mask: white lit, black umbra, "
             "orange soft penumbra (penumbra RMSE), blue geometric edge (2 px of a depth or normal "
-            "discontinuity or a terminator: its own RMSE), grey background");
+            "discontinuity or a terminator: its own RMSE), grey background, dark blue-grey outside "
+            "the light (a spot's cone: in no statistic)");
   }
   ImGui::SliderInt("stats every", &cs.stats_every, 1, 120, "%d frames");
   const std::string progress = progress_text(c);

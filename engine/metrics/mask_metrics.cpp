@@ -95,10 +95,13 @@ Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& ref, co
     return make_error("pixel classes of " + std::to_string(classes.width) + "x" + std::to_string(classes.height) +
                           " for masks of " + std::to_string(ref.width) + "x" + std::to_string(ref.height),
                       ErrorKind::internal);
+  // Receivers the light does not reach are judged by nothing (their classes say which).
+  CoverageMask judged = judged_pixels(classes);
+  for (size_t i = 0; i < judged.size() && !coverage.empty(); ++i) judged[i] = judged[i] && coverage[i];
   MaskErrors e;
   double sq = 0.0, abs_sum = 0.0, sq_pen = 0.0, sq_geo = 0.0;
   for (size_t i = 0; i < ref.pixels.size(); ++i) {
-    if (!coverage.empty() && !coverage[i]) continue;
+    if (!judged[i]) continue;
     const double d = static_cast<double>(test.pixels[i]) - static_cast<double>(ref.pixels[i]);
     sq += d * d;
     abs_sum += std::abs(d);
@@ -119,10 +122,10 @@ Result<MaskErrors> compare_masks(const MaskImage& test, const MaskImage& ref, co
   if (e.penumbra_pixels) e.rmse_penumbra = std::sqrt(sq_pen / static_cast<double>(e.penumbra_pixels));
   if (e.geometric_edge_pixels) e.rmse_geometric_edge = std::sqrt(sq_geo / static_cast<double>(e.geometric_edge_pixels));
   e.reliability = penumbra_reliability(classes);
-  Result<double> ssim = masked_ssim(test, ref, coverage);
+  Result<double> ssim = masked_ssim(test, ref, judged);
   if (!ssim) return ssim.error();
   e.ssim = *ssim;
-  Result<EdgeError> edge = edge_error(test, ref, coverage);
+  Result<EdgeError> edge = edge_error(test, ref, judged);
   if (!edge) return edge.error();
   e.edge_error = edge->error;
   e.edge_pixels = edge->pixels;

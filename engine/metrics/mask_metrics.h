@@ -1,6 +1,7 @@
 #pragma once
 // Quality of a technique's shadow_mask against a reference mask of the same frame, over receiver
-// pixels only (coverage mask; background is excluded from every statistic).
+// pixels only (coverage mask; background is excluded from every statistic, and so are receivers
+// the light does not reach: pixel_classes.h).
 //
 //   Result<MaskErrors> e = compare_masks(technique_mask, reference_mask, gbuffer_coverage, classes);
 //   if (e) table.add(e->rmse, e->rmse_penumbra, e->max_error, e->ssim);

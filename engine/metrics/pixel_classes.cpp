@@ -65,13 +65,14 @@ const char* pixel_class_name(PixelClass c) {
     case PixelClass::umbra: return "umbra";
     case PixelClass::soft_penumbra: return "soft penumbra";
     case PixelClass::geometric_edge: return "geometric edge";
+    case PixelClass::outside_light: return "outside the light";
   }
   return "?";
 }
 
 ReceiverGeometry receiver_geometry(int width, int height, const std::vector<glm::vec4>& positions,
                                    const std::vector<glm::vec3>& normals, const scene::Light& light) {
-  ReceiverGeometry g{width, height, {}, {}, {}};
+  ReceiverGeometry g{width, height, {}, {}, {}, {}};
   const size_t n = std::min(positions.size(), normals.size());
   for (size_t i = 0; i < n; ++i) {
     const glm::vec3 p(positions[i]), normal = normals[i];
@@ -80,6 +81,7 @@ ReceiverGeometry receiver_geometry(int width, int height, const std::vector<glm:
     g.view_depth.push_back(positions[i].w);
     g.normals.push_back(normal);
     g.facing.push_back(positions[i].w > 0.0f ? glm::dot(normal, glm::normalize(to_light)) : 0.0f);
+    g.reached.push_back(positions[i].w <= 0.0f || scene::light_reaches(light, p));
   }
   return g;
 }
@@ -90,7 +92,8 @@ PixelClasses classify_pixels(const MaskImage& reference, const CoverageMask& cov
   const size_t n = reference.pixels.size();
   if (!coverage.empty() && coverage.size() != n) return {};
   if (geometry && (geometry->width != reference.width || geometry->height != reference.height ||
-                   geometry->view_depth.size() != n || geometry->normals.size() != n || geometry->facing.size() != n))
+                   geometry->view_depth.size() != n || geometry->normals.size() != n || geometry->facing.size() != n ||
+                   geometry->reached.size() != n))
     return {};
   PixelClasses out{reference.width, reference.height, std::vector<PixelClass>(n, PixelClass::background)};
   for (size_t i = 0; i < n; ++i) {
@@ -115,6 +118,15 @@ PixelClasses classify_pixels(const MaskImage& reference, const CoverageMask& cov
         }
       if (near) out.classes[i] = PixelClass::geometric_edge;
     }
+  for (size_t i = 0; i < n; ++i)
+    if (out.classes[i] != PixelClass::background && !geometry->reached[i]) out.classes[i] = PixelClass::outside_light;
+  return out;
+}
+
+CoverageMask judged_pixels(const PixelClasses& classes) {
+  CoverageMask out(classes.classes.size(), 0);
+  for (size_t i = 0; i < out.size(); ++i)
+    out[i] = classes.classes[i] != PixelClass::background && classes.classes[i] != PixelClass::outside_light;
   return out;
 }
 
@@ -122,7 +134,7 @@ PenumbraReliability penumbra_reliability(const PixelClasses& c) {
   PenumbraReliability out;
   size_t receivers = 0, soft = 0;
   for (PixelClass k : c.classes) {
-    receivers += k != PixelClass::background;
+    receivers += k != PixelClass::background && k != PixelClass::outside_light;
     soft += k == PixelClass::soft_penumbra;
   }
   // 8-connected groups of soft-penumbra pixels (an explicit stack: groups can be large).
@@ -177,6 +189,7 @@ RgbaImage pixel_class_image(const PixelClasses& c) {
       case PixelClass::umbra: rgb = {0, 0, 0}; break;
       case PixelClass::soft_penumbra: rgb = {255, 140, 0}; break;
       case PixelClass::geometric_edge: rgb = {40, 90, 255}; break;
+      case PixelClass::outside_light: rgb = {50, 55, 80}; break;
     }
     img.pixels[i * 4] = rgb.r, img.pixels[i * 4 + 1] = rgb.g, img.pixels[i * 4 + 2] = rgb.b;
   }

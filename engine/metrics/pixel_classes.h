@@ -7,6 +7,9 @@
 //                   shadowing itself, whatever the filter (docs/evaluation.md "Pixel classes")
 //   soft_penumbra   otherwise, reference strictly between kPenumbraLow and kPenumbraHigh
 //   lit, umbra      otherwise, reference at or above kPenumbraHigh / at or below kPenumbraLow
+//   outside_light   receivers the light does not reach (outside a spot's cone: scene::
+//                   light_reaches), whatever the above: the lighting shows no mask value there,
+//                   so no statistic judges them (judged_pixels)
 //
 //   ReceiverGeometry g{w, h, view_depth, normals, facing};   // facing = N · (direction to light)
 //   PixelClasses c = classify_pixels(reference, coverage, &g);
@@ -26,7 +29,7 @@ namespace penumbra::metrics {
 inline constexpr float kPenumbraLow = 0.02f;
 inline constexpr float kPenumbraHigh = 0.98f;
 
-enum class PixelClass : uint8_t { background, lit, umbra, soft_penumbra, geometric_edge };
+enum class PixelClass : uint8_t { background, lit, umbra, soft_penumbra, geometric_edge, outside_light };
 const char* pixel_class_name(PixelClass c);
 
 // Pixels (Chebyshev distance) a discontinuity's class reaches.
@@ -43,6 +46,7 @@ struct ReceiverGeometry {
   std::vector<float> view_depth;    // > 0 on receivers
   std::vector<glm::vec3> normals;   // unit, world space
   std::vector<float> facing;        // N · (unit direction to the light); <= 0: faces away
+  std::vector<uint8_t> reached;     // scene::light_reaches (0 outside a spot's cone)
 };
 
 // From world positions with their view depth in w (0 on background) and world normals, rows top
@@ -56,10 +60,14 @@ struct PixelClasses {
   size_t count(PixelClass c) const;
 };
 
-// Classes of every pixel; without geometry (nullptr) no pixel is a geometric edge. Sizes must
-// match (checked by the callers that build the inputs; mismatched inputs give an empty result).
+// Classes of every pixel; without geometry (nullptr) no pixel is a geometric edge or outside the
+// light. Sizes must match (checked by the callers that build the inputs; mismatched inputs give
+// an empty result).
 PixelClasses classify_pixels(const MaskImage& reference, const CoverageMask& coverage,
                              const ReceiverGeometry* geometry = nullptr);
+
+// The pixels every statistic judges: receivers but those outside the light.
+CoverageMask judged_pixels(const PixelClasses& classes);
 
 // Whether the soft penumbra can carry a verdict: at least kMinPenumbraShare of the receivers, and
 // not mostly isolated pixels (more than half of its 8-connected groups a single pixel).
@@ -72,7 +80,7 @@ struct PenumbraReliability {
 PenumbraReliability penumbra_reliability(const PixelClasses& classes);
 
 // A picture of the classes (docs/evaluation.md's colours): lit white, umbra black, soft penumbra
-// orange, geometric edge blue, background grey.
+// orange, geometric edge blue, background grey, outside the light dark blue-grey.
 RgbaImage pixel_class_image(const PixelClasses& classes);
 
 }  // namespace penumbra::metrics

@@ -46,6 +46,15 @@ Status check_spot_angle_degrees(float degrees) {
   return make_error(text);
 }
 
+bool light_reaches(const Light& light, const glm::vec3& world) {
+  if (light.type != LightType::spot) return true;
+  const glm::vec3 to_point = world - light.position;
+  const float length = glm::length(to_point);
+  if (length <= 0.0f) return true;
+  // lighting.comp.glsl's cone: smoothstep(cos(spot_angle), ..., cos(angle off the axis)), 0 at or below
+  return glm::dot(to_point / length, glm::normalize(light.direction)) > std::cos(light.spot_angle);
+}
+
 const char* light_type_name(LightType type) {
   switch (type) {
     case LightType::directional: return "directional";

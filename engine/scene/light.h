@@ -57,6 +57,10 @@ struct Light {
   float radius() const { return 0.5f * size; }
 };
 
+// Whether the light reaches `world` at all: false outside a spot's cone, where the lighting pass
+// (passes/lighting) multiplies the shadow by a cone factor of 0, so no mask value shows there.
+bool light_reaches(const Light& light, const glm::vec3& world);
+
 // A directional light looking along `direction` at the centre of `bounds`, with its emitter
 // plane placed `distance_in_radii` bounding-sphere radii away from the centre and a disk
 // diameter of `size_fraction` x the scene's bounding-sphere diameter.

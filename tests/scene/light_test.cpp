@@ -186,3 +186,27 @@ TEST(PointLightFaces, AMapTooSmallForSixFacesIsAnErrorNamingBothSizes) {
   EXPECT_NE(faces.error().message.find("48"), std::string::npos) << faces.error().message;
   EXPECT_NE(faces.error().message.find("40"), std::string::npos) << faces.error().message;
 }
+
+// The lighting pass's cone: a spot reaches what lies within its half-angle of its axis; the other
+// lights reach everything.
+TEST(LightReaches, ASpotReachesItsConeOnly) {
+  scene::Light spot;
+  spot.type = scene::LightType::spot;
+  spot.position = glm::vec3(0.0f, 5.0f, 0.0f);
+  spot.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+  spot.spot_angle = glm::radians(30.0f);
+  auto at_degrees = [&](float degrees) {
+    const float a = glm::radians(degrees);
+    return spot.position + 5.0f * glm::vec3(std::sin(a), -std::cos(a), 0.0f);
+  };
+  EXPECT_TRUE(scene::light_reaches(spot, at_degrees(0.0f)));
+  EXPECT_TRUE(scene::light_reaches(spot, at_degrees(29.0f)));
+  EXPECT_FALSE(scene::light_reaches(spot, at_degrees(31.0f)));
+  EXPECT_FALSE(scene::light_reaches(spot, spot.position + glm::vec3(0.0f, 1.0f, 0.0f))) << "behind the spot";
+  for (scene::LightType other : {scene::LightType::directional, scene::LightType::point}) {
+    scene::Light l = spot;
+    l.type = other;
+    EXPECT_TRUE(scene::light_reaches(l, at_degrees(31.0f)));
+    EXPECT_TRUE(scene::light_reaches(l, spot.position + glm::vec3(0.0f, 1.0f, 0.0f)));
+  }
+}

@@ -2,9 +2,10 @@
 // has no geometric edge however it is tilted; a depth step, a fold of the normal, the background
 // and a self-shadowing terminator each make a band kGeometricEdgeRadius px wide; the soft
 // penumbra is the reference's fractional pixels elsewhere; the reliability rule; and
-// compare_masks splitting its errors by class.
+// compare_masks splitting its errors by class and leaving out receivers the light does not reach.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -19,17 +20,19 @@ namespace {
 constexpr int kW = 40, kH = 30;
 
 // A frame whose pixel (x, y) has inverse view depth inv(x, y) (a plane when linear in x and y),
-// normal n(x, y) and facing f(x, y); inv <= 0 is background.
+// normal n(x, y), facing f(x, y) and is reached by the light where `reached`; inv <= 0 is background.
 ReceiverGeometry geometry(const std::function<float(int, int)>& inv,
                           const std::function<glm::vec3(int, int)>& n = [](int, int) { return glm::vec3(0, 1, 0); },
-                          const std::function<float(int, int)>& f = [](int, int) { return 1.0f; }) {
-  ReceiverGeometry g{kW, kH, {}, {}, {}};
+                          const std::function<float(int, int)>& f = [](int, int) { return 1.0f; },
+                          const std::function<bool(int, int)>& reached = [](int, int) { return true; }) {
+  ReceiverGeometry g{kW, kH, {}, {}, {}, {}};
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
       const float i = inv(x, y);
       g.view_depth.push_back(i > 0.0f ? 1.0f / i : 0.0f);
       g.normals.push_back(n(x, y));
       g.facing.push_back(f(x, y));
+      g.reached.push_back(reached(x, y));
     }
   return g;
 }
@@ -153,4 +156,42 @@ TEST(PixelClasses, CompareMasksSplitsTheErrorByClass) {
   Result<MaskErrors> by_value = compare_masks(test, ref, cov);
   ASSERT_TRUE(by_value);
   EXPECT_GT(by_value->rmse_penumbra, 0.0) << "without the G-buffer the step's error is penumbra error";
+}
+
+// A spot's cone ends at column 30: beyond it the lighting shows no mask value, so a technique
+// that calls those receivers lit where the truth has umbra (a shadow map ends at its frustum) is
+// not wrong, and nothing counts them, not even the penumbra's share of the receivers.
+TEST(PixelClasses, ReceiversOutsideTheLightAreJudgedByNothing) {
+  const ReceiverGeometry g = geometry([](int, int) { return 0.25f; }, [](int, int) { return glm::vec3(0, 1, 0); },
+                                      [](int, int) { return 1.0f; }, [](int x, int) { return x < 30; });
+  MaskImage ref(kW, kH, 1.0f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      if (x >= 30) ref.at(x, y) = 0.0f;            // umbra outside the cone
+      if (y >= 10 && y < 13) ref.at(x, y) = 0.5f;  // a band of penumbra across the whole frame
+    }
+  MaskImage test = ref;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 30; x < kW; ++x) test.at(x, y) = 1.0f;
+  const CoverageMask cov = coverage_of(g);
+  const PixelClasses c = classify_pixels(ref, cov, &g);
+  EXPECT_EQ(c.count(PixelClass::outside_light), static_cast<size_t>(10 * kH));
+  EXPECT_EQ(c.count(PixelClass::geometric_edge), 0u) << "the cone's edge is no edge of the geometry";
+  EXPECT_EQ(c.count(PixelClass::soft_penumbra), static_cast<size_t>(30 * 3));
+  Result<MaskErrors> e = compare_masks(test, ref, cov, c);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->pixels, static_cast<size_t>(30 * kH));
+  EXPECT_EQ(e->rmse, 0.0);
+  EXPECT_EQ(e->max_error, 0.0);
+  EXPECT_EQ(e->ssim, 1.0);
+  EXPECT_EQ(e->edge_error, 0.0);
+  const CoverageMask judged = judged_pixels(c);
+  EXPECT_EQ(std::count(judged.begin(), judged.end(), uint8_t{1}), 30 * kH);
+  // 90 of 900 judged receivers are penumbra (10%); counted over all 1200 it would be 7.5%.
+  EXPECT_TRUE(penumbra_reliability(c).reliable);
+  // Without the G-buffer nothing is known of the light: every receiver is judged.
+  Result<MaskErrors> by_value = compare_masks(test, ref, cov);
+  ASSERT_TRUE(by_value);
+  EXPECT_EQ(by_value->pixels, static_cast<size_t>(kW * kH));
+  EXPECT_GT(by_value->rmse, 0.4);
 }
