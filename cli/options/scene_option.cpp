@@ -32,7 +32,7 @@ std::vector<OptionSpec> scene_option_specs() {
       {"camera", true, false, "C",
        "scene (default: a built-in's own, a glTF fitted to the model), fit, file[:N|:NAME] (a camera the glTF "
        "places), or X,Y,Z:TX,TY,TZ (position looking at target, world units)"},
-      {"light-dir", true, false, "X,Y,Z", "light direction (light -> scene); a directional emitter keeps its distance"},
+      {"light-dir", true, false, "X,Y,Z", "light direction (light -> scene); a directional emitter keeps its distance; an error for a point light"},
       {"light-size", true, false, "S", "emitter diameter, world units; 0 = hard shadows"},
       {"ground", true, false, "on|off", "a plane under models that have no floor (default on)"},
   };

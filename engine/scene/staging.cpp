@@ -75,7 +75,13 @@ Status stage_scene(Scene& scene, const StagingOptions& o) {
     if (std::optional<Light> own = file_light(scene)) scene.light = *own;
     else scene.light = default_light(scene.bounds, scene.camera.forward());
   }
-  if (o.light_direction) set_light_direction(scene.light, *o.light_direction, scene.bounds);
+  if (o.light_direction) {
+    // A point light has no direction (scene/light.h): turning it would silently change nothing.
+    if (scene.light.type == LightType::point)
+      return make_error("a light direction was given, but the scene's light is a point light, which shines in every "
+                        "direction from its position (a direction turns directional and spot lights only)");
+    set_light_direction(scene.light, *o.light_direction, scene.bounds);
+  }
   if (o.light_size) {
     if (!(*o.light_size >= 0.0f))
       return make_error("light size must be >= 0 (emitter diameter, world units)");

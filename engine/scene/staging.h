@@ -32,7 +32,7 @@ struct CameraChoice {
 
 struct StagingOptions {
   CameraChoice camera;
-  std::optional<glm::vec3> light_direction;  // light -> scene; normalised when applied
+  std::optional<glm::vec3> light_direction;  // light -> scene; normalised when applied; an error for a point light
   std::optional<float> light_size;           // emitter diameter, world units (0 = hard)
   bool ground = true;                        // add a plane under a model that has no floor
   float aspect = 16.0f / 9.0f;               // width / height of the frame (fitted cameras)

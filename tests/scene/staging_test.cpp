@@ -207,6 +207,17 @@ TEST(Staging, TheFilesDirectionalLightIsUsed) {
   EXPECT_EQ(again->light.size, 0.0f);
 }
 
+TEST(Staging, ADirectionForAPointLightIsAnError) {
+  auto room = scene::make_builtin_scene("room");
+  ASSERT_TRUE(room);
+  ASSERT_EQ(room->light.type, scene::LightType::point);
+  scene::StagingOptions o;
+  o.light_direction = glm::vec3(0, -1, 0);
+  const Status s = scene::stage_scene(*room, o);
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().to_string().find("point light"), std::string::npos) << s.error().to_string();
+}
+
 TEST(Staging, WithoutALightOfItsOwnTheDefaultFollowsTheCamera) {
   auto scene = scene::load_gltf(write_gltf("plain.gltf", nodes("{}"), "", ""));
   ASSERT_TRUE(scene) << scene.error().to_string();
