@@ -101,12 +101,14 @@ Result<TemporalChange> temporal_error(const std::vector<SurfaceFrame>& frames, c
   TemporalChange out;
   double sum = 0.0;
   for (size_t t = 1; t < frames.size(); ++t) {
-    TemporalChange truth_counts;
-    const std::vector<float> a = signed_change(frames[t - 1], frames[t], how, &out);
-    const std::vector<float> b = signed_change(truth[t - 1], truth[t], how, &truth_counts);
+    TemporalChange scratch;  // what each sequence could not read; counted below per pixel, once
+    const std::vector<float> a = signed_change(frames[t - 1], frames[t], how, &scratch);
+    const std::vector<float> b = signed_change(truth[t - 1], truth[t], how, &scratch);
     for (size_t i = 0; i < a.size(); ++i) {
-      if (std::isnan(a[i]) != std::isnan(b[i])) ++out.disoccluded;  // read in one sequence only
-      if (std::isnan(a[i]) || std::isnan(b[i])) continue;
+      if (std::isnan(a[i]) || std::isnan(b[i])) {
+        if (frames[t].position[i].w > 0.0f) ++out.disoccluded;
+        continue;
+      }
       sum += std::abs(a[i] - b[i]);
       ++out.pixels;
     }
