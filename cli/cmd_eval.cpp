@@ -50,8 +50,8 @@ const std::vector<OptionSpec> kSpecs = with_cascade_options(with_scene_options({
     {"no-cache", false, false, "", "render the reference even when a cached one matches, and do not cache it"},
     {"flicker", true, false, "pan|light", "also measure temporal stability over a slow camera pan or light motion"},
     {"flicker-frames", true, false, "N", "frames of the --flicker motion (default 8; each needs a reference)"},
-    {"flicker-step", true, false, "DEG", "--flicker motion per frame, degrees (default 0.25)"},
-    {"flicker-match", true, false, "PX", "compare only pixels whose reprojection lands within PX (0.01-0.5) of a pixel centre, "
+    {"flicker-step", true, false, "DEG|Npx", "--flicker motion per frame, degrees (default 0.25); pan: Npx turns the image centre by N pixels (1px: a wide band of pixels lands on pixel centres, for --flicker-match)"},
+    {"flicker-match", true, false, "PX", "compare only pixels whose reprojection lands within PX (0.001-0.5) of a pixel centre, "
                                          "read without interpolation (default: bilinear, every pixel)"},
     context_option_spec(),
     plugin_dir_option_spec(),
@@ -113,12 +113,20 @@ Result<EvalOptions> parse_eval_options(const ParsedArgs& args, const technique::
       f.frames = *frames;
     }
     if (auto d = args.get("flicker-step")) {
-      auto step = parse_real("flicker-step", *d, 0.001, 10.0);
-      if (!step) return step.error();
-      f.degrees_per_frame = static_cast<float>(*step);
+      const bool pixels = d->size() > 2 && d->compare(d->size() - 2, 2, "px") == 0;
+      if (pixels) {
+        auto step = parse_real("flicker-step", d->substr(0, d->size() - 2), 0.05, 50.0);
+        if (!step) return make_error("--flicker-step expects degrees in [0.001, 10] or pixels in [0.05, 50] written NNpx, got '" + shortened(*d) + "'");
+        if (f.motion != "pan") return make_error("--flicker-step in pixels (" + shortened(*d) + ") needs --flicker pan");
+        f.pixels_per_frame = static_cast<float>(*step);
+      } else {
+        auto step = parse_real("flicker-step", *d, 0.001, 10.0);
+        if (!step) return make_error("--flicker-step expects degrees in [0.001, 10] or pixels in [0.05, 50] written NNpx, got '" + shortened(*d) + "'");
+        f.degrees_per_frame = static_cast<float>(*step);
+      }
     }
     if (auto d = args.get("flicker-match")) {
-      auto within = parse_real("flicker-match", *d, 0.01, 0.5);
+      auto within = parse_real("flicker-match", *d, 0.001, 0.5);
       if (!within) return within.error();
       f.reprojection.match_within = static_cast<float>(*within);
     }
@@ -210,16 +218,29 @@ Status write_outputs(const EvalOptions& o, const EvalReport& report, const std::
 // Each technique's temporal change over the motion, minus the reference's on the same frames, and
 // its temporal error against the reference's frames.
 Status measure_flicker(technique::TechniqueSession& session, const EvalOptions& o, EvalReport& report) {
-  const FlickerSettings& f = *o.flicker;
-  std::fprintf(stderr, "flicker: %d frames of %s, reference...\n", f.frames, f.motion.c_str());
+  auto resolved = resolved_flicker(session, *o.flicker);
+  if (!resolved) return resolved.error();
+  const FlickerSettings& f = *resolved;
+  std::fprintf(stderr, "flicker: %d frames of %s (%.4g deg/frame), reference...\n", f.frames, f.motion.c_str(),
+               f.degrees_per_frame);
   auto reference = reference_motion_frames(session, {o.reference, o.rays, o.samples, o.sets, o.use_cache}, f);
   if (!reference) return reference.error();
   auto reference_change = metrics::temporal_change(*reference, f.reprojection);
   if (!reference_change) return reference_change.error();
+  // A mean over no pixels would read as a perfectly steady mask.
+  if (reference_change->pixels == 0) {
+    char m[256];
+    std::snprintf(m, sizeof m, "--flicker-match %.3g: no receiver pixel of the motion lands within %.3g px of a pixel centre "
+                  "(%zu left out); a pan by whole pixels makes a wide band that does: --flicker-step 1px",
+                  f.reprojection.match_within, f.reprojection.match_within, reference_change->unmatched);
+    return make_error(m, ErrorKind::bad_input);
+  }
   report.flicker_motion = f.motion;
   report.flicker_frames = f.frames;
+  report.flicker_degrees_per_frame = f.degrees_per_frame;
   report.flicker_match = f.reprojection.match_within;
   report.flicker_reference = reference_change->mean_abs_change;
+  report.flicker_pixels = reference_change->pixels;
   for (size_t i = 0; i < o.techniques.size(); ++i) {
     std::fprintf(stderr, "flicker: technique %s...\n", o.techniques[i].label.c_str());
     auto frames = technique_motion_frames(session, o.techniques[i], o.sets, f);
@@ -231,6 +252,7 @@ Status measure_flicker(technique::TechniqueSession& session, const EvalOptions& 
     auto error = metrics::temporal_error(*frames, *reference, f.reprojection);
     if (!error) return error.error();
     report.rows[i].temporal_error = error->mean_abs_change;
+    report.rows[i].temporal_pixels = error->pixels;
   }
   return {};
 }
@@ -325,10 +347,10 @@ int cmd_eval(const std::vector<std::string>& argv) {
     const float match = o.flicker->reprojection.match_within;
     char how[96] = "bilinear reprojection";
     if (match > 0.0f) std::snprintf(how, sizeof how, "pixels that land within %.3g px of a centre", match);
-    std::printf("flicker: mean |change| of the reprojected mask over a %d-frame %s (%.3g deg/frame; %s), minus the "
-                "reference's (%.5f); t-error: mean |its change - the reference's| per pixel\n", o.flicker->frames,
-                o.flicker->motion == "pan" ? "camera pan" : "light motion", o.flicker->degrees_per_frame, how,
-                report.flicker_reference);
+    std::printf("flicker: mean |change| of the reprojected mask over a %d-frame %s (%.4g deg/frame; %s; %zu pixel "
+                "pairs), minus the reference's (%.5f); t-error: mean |its change - the reference's| per pixel\n",
+                o.flicker->frames, o.flicker->motion == "pan" ? "camera pan" : "light motion",
+                report.flicker_degrees_per_frame, how, report.flicker_pixels, report.flicker_reference);
   }
   if (Status s = write_outputs(o, report, masks, reference->mask, reference->coverage, classes); !s)
     return fail(s.error());

@@ -31,6 +31,7 @@ std::string eval_report_json(const EvalReport& report) {
       row["temporal_change"] = r.temporal_change;
       row["flicker"] = r.flicker;
       row["temporal_error"] = r.temporal_error;
+      row["temporal_pixels"] = r.temporal_pixels;
     }
     rows.push_back(std::move(row));
   }
@@ -38,8 +39,10 @@ std::string eval_report_json(const EvalReport& report) {
   if (flicker) {
     j["flicker_motion"] = report.flicker_motion;
     j["flicker_frames"] = report.flicker_frames;
+    j["flicker_step_degrees"] = report.flicker_degrees_per_frame;
     j["flicker_match"] = report.flicker_match;
     j["flicker_reference"] = report.flicker_reference;
+    j["flicker_pixels"] = report.flicker_pixels;
   }
   j["rows"] = rows;
   return j.dump(2) + "\n";

@@ -1,6 +1,7 @@
 #include "measurement/flicker_run.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -65,6 +66,41 @@ Result<metrics::SurfaceFrame> read_frame(technique::TechniqueSession& session, c
 Status check_flicker_motion(const std::string& motion) {
   if (motion == "pan" || motion == "light") return {};
   return make_error("--flicker expects pan or light, got '" + shortened(motion) + "'");
+}
+
+Result<float> pan_degrees_for_pixels(const scene::Camera& camera, int width, int height, float pixels) {
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  const glm::mat4 before = camera.projection(aspect) * camera.view();
+  // Where the turned view's centre ray lands in the first view, pixels from its centre: it grows
+  // with the angle until the ray leaves the view.
+  auto centre_shift = [&](double radians) {
+    scene::Camera turned = camera;
+    turned.yaw += static_cast<float>(radians);
+    const glm::vec4 clip = before * glm::vec4(turned.position + turned.forward(), 1.0f);
+    return glm::length(0.5f * glm::vec2(clip) / clip.w * glm::vec2(width, height));
+  };
+  double lo = 0.0, hi = 0.5 * camera.fov_y;
+  if (!(pixels > 0.0f) || centre_shift(hi) < pixels) {
+    char m[160];
+    std::snprintf(m, sizeof m, "--flicker-step %gpx turns the image centre out of the view in one frame", pixels);
+    return make_error(m);
+  }
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (centre_shift(mid) < pixels ? lo : hi) = mid;
+  }
+  return static_cast<float>(glm::degrees(0.5 * (lo + hi)));
+}
+
+Result<FlickerSettings> resolved_flicker(technique::TechniqueSession& session, const FlickerSettings& flicker) {
+  if (flicker.pixels_per_frame <= 0.0f) return flicker;
+  if (flicker.motion != "pan") return make_error("a --flicker-step in pixels needs --flicker pan");
+  const graph::CompileSettings& s = session.settings();
+  auto degrees = pan_degrees_for_pixels(session.camera(), s.screen_w, s.screen_h, flicker.pixels_per_frame);
+  if (!degrees) return degrees.error();
+  FlickerSettings out = flicker;
+  out.degrees_per_frame = *degrees;
+  return out;
 }
 
 Result<std::vector<metrics::SurfaceFrame>> reference_motion_frames(technique::TechniqueSession& session,

@@ -6,6 +6,7 @@
 // Needs: shadow_common.glsl included before. Receivers come from the frame contract's view depth
 // and normal (gbuffer_read.glsl): a neighbour costs a 4-byte depth fetch.
 #include "gbuffer/gbuffer_read.glsl"
+#include "sampling/sampling.glsl"
 
 // A receiver pixel in light space: shadow-map coordinate (uv, window depth) and the receiver
 // plane's depth gradient d(window depth)/d(uv) (Isidoro 2006).
@@ -123,6 +124,33 @@ float receiver_depth_at(Receiver r, vec2 offset_uv, float bias) {
   return r.coord.z + dot(offset_uv, r.dz_duv) - (abs(r.dz_duv.x) + abs(r.dz_duv.y)) * u_shadow_texel - bias;
 }
 
+
+// The rotation of a receiver's tap pattern (a Vogel disk), fixed to the surface: 2 pi IGN
+// (Jimenez 2014) over cells of half a map texel at the receiver. The papers key IGN to the screen
+// pixel (Sterna 2018, section 1), so a camera move gives every surface point a new rotation and a
+// still shadow changes under a pan wherever the kernel spans several texels (docs/evaluation.md,
+// "Temporal stability"); map cells stay on the surface. Cells, not a continuous coordinate: IGN
+// between lattice points is a stripe pattern. A pixel's rotation is as uniformly spread as with
+// the screen key, so its expected error is the same; only neighbours' correlation changes.
+const float kNoiseCellsPerTexel = 2.0;
+float receiver_noise_rotation(Receiver r) {
+  vec2 texels;  // the receiver's position in map texels, on a lattice fixed in the world
+  if (kCascades != 1 && g_cascade >= 0 && g_cascade < kCascades)
+    // A cascade's square follows the camera by whole texels: the UV of a point changes by an
+    // integer number of texels, in which IGN is not periodic; light-view coordinates stay.
+    texels = (u_light_view * vec4(r.world, 1.0)).xy / (light_frustum_width() * u_shadow_texel);
+  else
+    texels = r.coord.xy / (kLightFaces == 1 ? u_shadow_texel : u_shadow_texel * u_light_face_rect[0].z);
+  return noise_rotation(floor(texels * kNoiseCellsPerTexel));
+}
+
+// The rotation of a receiver's taps as the pass's rotation_noise parameter says
+// (passes/sampling/rotation_noise.h): on the surface, or the papers' IGN of `screen_key` (the
+// pixel, as each pass has always keyed it).
+uniform int u_noise_on_screen;
+float tap_rotation(Receiver r, vec2 screen_key) {
+  return u_noise_on_screen == 1 ? noise_rotation(screen_key) : receiver_noise_rotation(r);
+}
 
 // The shadow-map UV offset from the receiver of a world position: shadow_coord(world) -
 // r.coord for one view; for six faces, in the face-sized view centred on the receiver's direction

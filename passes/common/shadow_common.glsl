@@ -65,9 +65,14 @@ vec3 face_shadow_coord(int face, vec3 world) {
 // receiver's neighbours and taps are all read in the receiver's cascade.
 int g_cascade = -1;
 
-// A hash of a world position in [0, 1): the same point gives the same value in every pass.
-float position_hash(vec3 p) {
-  uvec3 u = floatBitsToUint(p);
+// A hash in [0, 1) of the cell holding a world position: cubes one texel of the finest cascade
+// wide, in the light's view. A point gets the same value in every pass and, though the G-buffer
+// places it a little differently as the camera moves, in every frame: a hash of its exact bits
+// redrew the cascade of every point in the blend band each frame (flicker under a pan:
+// docs/results/cascades.md, "Temporal stability").
+float position_hash(vec3 world) {
+  float texel = u_cascade_rect[0].w * u_shadow_texel / u_cascade_rect[0].z;  // world units
+  uvec3 u = uvec3(ivec3(floor((u_light_view * vec4(world, 1.0)).xyz / texel)));
   uint h = u.x * 0x8da6b343u ^ u.y * 0xd8163841u ^ u.z * 0xcb1ab31fu;
   h ^= h >> 16; h *= 0x7feb352du; h ^= h >> 15; h *= 0x846ca68bu; h ^= h >> 16;
   return float(h >> 8) * (1.0 / 16777216.0);

@@ -6,8 +6,10 @@
 //                    (1 - f, 1, ..., 1, f), so they are read as ((N + 1) / 2)^2 compared
 //                    textureGathers of 2 x 2 texels each (9 instead of 25 fetches at N = 5), the
 //                    weights applied here;
-//   PCF_KERNEL_VOGEL `samples` taps on a Vogel disk of `radius` texels, rotated per pixel by
-//                    phi = 2 pi IGN(pixel) (Sterna 2018, section 1) so banding becomes noise.
+//   PCF_KERNEL_VOGEL `samples` taps on a Vogel disk of `radius` texels, rotated per receiver by
+//                    phi = 2 pi IGN (Sterna 2018, section 1) so banding becomes noise; IGN of
+//                    the receiver's place in the map or of the pixel (tap_rotation,
+//                    receiver_plane.glsl).
 // Each tap is a bilinear hardware comparison against the receiver plane (Isidoro
 // 2006) minus a small constant bias. A point light's six faces (shadow_common.glsl) place every
 // tap by direction (shadow_tap), the box kernel included.
@@ -66,7 +68,7 @@ void main() {
     }
 #else
     vec2 texel = kLightFaces == 1 ? 1.0 / size : vec2(u_shadow_texel);  // six faces: one face texel
-    float phi = noise_rotation(vec2(p));
+    float phi = tap_rotation(r, vec2(p));
     for (int i = 0; i < u_samples; ++i) {
       vec2 o = vogel_disk_sample(i, u_samples, phi) * u_radius * texel;
       sum += pcf_tap(u_shadow_map, r, o, u_depth_bias);

@@ -8,6 +8,7 @@
 #include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
+#include "passes/sampling/rotation_noise.h"
 #include "passes/shadow_tiles/tiled_dispatch.h"
 
 namespace penumbra::passes {
@@ -36,6 +37,7 @@ class PcfMaskPass final : public exec::PassImpl {
     prog.set("u_box_size", ctx.integer("box_size"));  // odd: the declaration's step
     prog.set("u_samples", ctx.integer("samples"));
     prog.set("u_radius", ctx.real("radius"));
+    set_rotation_noise(prog, ctx);
     gl::Texture& mask = ctx.texture("mask");
     dispatch_screen(ctx, p, mask.width(), mask.height());
     return {};
@@ -54,10 +56,11 @@ exec::PassType pcf_mask_pass_type() {
   return b.image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "mask"})
       .enumeration("kernel", "box", {"box", "vogel"},
-                   "box: N x N taps one texel apart; vogel: Vogel disk rotated per pixel by interleaved gradient noise")
+                   "box: N x N taps one texel apart; vogel: Vogel disk rotated per receiver by interleaved gradient noise")
       .integer("box_size", 5, 1, 15, "texels", "Box kernel width N (odd; kernel = box)").step(2)
       .integer("samples", 16, 1, 64, "", "Vogel-disk taps (kernel = vogel)")
       .real("radius", 2.5, 0.0, 64.0, "texels", "Vogel-disk radius (kernel = vogel)")
+      .param(rotation_noise_param())
       .real("depth_bias", 0.0002, 0.0, 0.05, "window depth",
             "Constant bias subtracted from the receiver-plane depth of every tap")
       .build<PcfMaskPass>();

@@ -12,8 +12,9 @@
 // Output: mean blocker distance from the light in world units, 0 where no blocker was found
 // (fully lit, background, or outside the shadow map) and where the receiver faces away from the
 // light (the filter writes 0 there whatever the blockers). Taps: `samples` Vogel-disk positions
-// rotated per pixel by 2 pi IGN(pixel), each a textureGather of 4 raw depths (so 4 x samples
-// texels), each compared against the receiver plane (Isidoro 2006) minus a constant bias.
+// rotated per receiver by 2 pi IGN (tap_rotation), each a textureGather of 4 raw depths (so
+// 4 x samples texels), each compared against the receiver plane (Isidoro 2006) minus a constant
+// bias.
 // A point light's six faces: taps placed by direction (shadow_tap), distances from the light
 // along each tap's ray, so the search runs on across face edges.
 #include "screen_pass.glsl"
@@ -40,7 +41,7 @@ void main() {
     float d_r = receiver_light_distance(r);
     float width = min(blocker_search_width_uv(d_r) * u_light_size_scale, u_max_search_uv);
     float radius = 0.5 * width;
-    float phi = noise_rotation(vec2(p));
+    float phi = tap_rotation(r, vec2(p));
     float sum = 0.0;
     int count = 0;
     for (int i = 0; i < u_samples; ++i) {

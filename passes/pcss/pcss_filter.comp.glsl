@@ -39,7 +39,7 @@ void main() {
     float d_r = receiver_light_distance(r);
     float w_penumbra = min(penumbra_width_uv(d_r, d_b) * u_light_size_scale, u_max_filter_uv);
     float radius = 0.5 * w_penumbra;
-    float phi = noise_rotation(vec2(p));
+    float phi = tap_rotation(r, vec2(p));
     float sum = 0.0;
     for (int i = 0; i < u_samples; ++i)
       sum += pcf_tap(u_shadow_map, r, vogel_disk_sample(i, u_samples, phi) * radius, u_depth_bias);

@@ -6,6 +6,7 @@
 #include "exec/pass_decl_builder.h"
 #include "passes/common/shadow_receiver_decl.h"
 #include "passes/common/shadow_uniforms.h"
+#include "passes/sampling/rotation_noise.h"
 #include "passes/shadow_tiles/tiled_dispatch.h"
 
 namespace penumbra::passes {
@@ -54,6 +55,7 @@ class BlockerSearchPass final : public exec::PassImpl {
     prog.set("u_samples", ctx.integer("samples"));
     prog.set("u_light_size_scale", ctx.real("light_size_scale"));
     prog.set("u_max_search_uv", ctx.real("max_search_uv"));
+    set_rotation_noise(prog, ctx);
     gl::Texture& out = ctx.texture("blocker");
     dispatch_screen(ctx, p, out.width(), out.height());
     return {};
@@ -81,6 +83,7 @@ class FilterPass final : public exec::PassImpl {
     prog.set("u_samples", ctx.integer("samples"));
     prog.set("u_light_size_scale", ctx.real("light_size_scale"));
     prog.set("u_max_filter_uv", ctx.real("max_filter_uv"));
+    set_rotation_noise(prog, ctx);
     gl::Texture& mask = ctx.texture("mask");
     dispatch_screen(ctx, p, mask.width(), mask.height());
     return {};
@@ -98,10 +101,11 @@ exec::PassType pcss_blocker_search_pass_type() {
   add_tile_slots(b);
   return b.image_out("blocker", {Format::R32F})
       .same_size({"depth", "normal", "blocker"})
-      .param(samples_param("Blocker-search taps (each a textureGather of 4 texels), Vogel disk rotated per pixel"))
+      .param(samples_param("Blocker-search taps (each a textureGather of 4 texels), Vogel disk rotated per receiver"))
       .param(light_size_scale_param())
       .param(depth_bias_param())
       .param(max_uv_param("max_search_uv", "blocker search region"))
+      .param(rotation_noise_param())
       .build<BlockerSearchPass>();
 }
 
@@ -112,10 +116,11 @@ exec::PassType pcss_filter_pass_type() {
   return b.sampled("blocker", {Format::R32F})
       .image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "blocker", "mask"})
-      .param(samples_param("PCF taps (bilinear hardware comparisons), Vogel disk rotated per pixel"))
+      .param(samples_param("PCF taps (bilinear hardware comparisons), Vogel disk rotated per receiver"))
       .param(light_size_scale_param())
       .param(depth_bias_param())
       .param(max_uv_param("max_filter_uv", "filter kernel"))
+      .param(rotation_noise_param())
       .build<FilterPass>();
 }
 

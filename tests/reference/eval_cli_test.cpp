@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <limits>
@@ -200,6 +201,8 @@ TEST(EvalCli, FlickerIsTheTemporalChangeAboveTheReferences) {
   const nlohmann::json moving = flicker("2", "moving.json");
   EXPECT_EQ(moving["flicker_motion"], "pan");
   EXPECT_EQ(moving["flicker_frames"], 3);
+  EXPECT_EQ(moving["flicker_step_degrees"], 2.0);
+  EXPECT_GT(moving["flicker_pixels"].get<size_t>(), 1000u);  // bilinear: nearly every receiver, twice
   const double reference = moving["flicker_reference"];
   EXPECT_GE(reference, 0.0);
   for (const auto& row : moving["rows"]) {
@@ -209,6 +212,8 @@ TEST(EvalCli, FlickerIsTheTemporalChangeAboveTheReferences) {
     const double error = row["temporal_error"];
     EXPECT_GT(error, 0.0) << row["technique"];
     EXPECT_LE(error, change + reference + 1e-9) << row["technique"];
+    EXPECT_GT(row["temporal_pixels"].get<size_t>(), 0u) << row["technique"];
+    EXPECT_LE(row["temporal_pixels"].get<size_t>(), moving["flicker_pixels"].get<size_t>()) << row["technique"];
   }
   // Barely moving, the same surface points keep their values: no change for anyone.
   const nlohmann::json still = flicker("0.001", "still.json");
@@ -229,11 +234,37 @@ TEST(EvalCli, FlickerIsTheTemporalChangeAboveTheReferences) {
   EXPECT_NEAR(row["flicker"].get<double>(), row["temporal_change"].get<double>() - m["flicker_reference"].get<double>(), 1e-9);
   EXPECT_GE(row["temporal_error"].get<double>(), 0.0);
   for (const char* bad : {"--flicker wiggle", "--flicker-frames 4", "--flicker pan --flicker-frames 1",
-                          "--flicker-match 0.1", "--flicker pan --flicker-match 0.7", "--flicker pan --flicker-match 0"}) {
+                          "--flicker-match 0.1", "--flicker pan --flicker-match 0.7", "--flicker pan --flicker-match 0",
+                          "--flicker pan --flicker-match 0.0005", "--flicker light --flicker-step 1px",
+                          "--flicker pan --flicker-step 0px", "--flicker pan --flicker-step px",
+                          "--flicker pan --flicker-step 99px", "--flicker pan --flicker-step 1pix"}) {
     EvalRun r = run_eval(std::string("--scene ball --techniques hard ") + bad);
     EXPECT_EQ(r.code, 2) << bad;
     EXPECT_NE(r.err.find("flicker"), std::string::npos) << r.err;
   }
+}
+
+// --flicker-step 1px: the camera turns so that the image centre moves by one pixel a frame, and a
+// band around it lands on pixel centres for --flicker-match; a pan that lands none is refused
+// rather than reported as a perfectly steady mask.
+TEST(EvalCli, APanByWholePixelsComparesABandOfPixelsAndNoneIsAnError) {
+  const fs::path d = out_dir();
+  const fs::path json = d / "px.json";
+  EvalRun r = run_eval("--scene avenue --size 160x90 --rays 16 --frames 1 --techniques hard --flicker pan "
+                       "--flicker-frames 3 --flicker-step 1px --flicker-match 0.01 --json " + json.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
+  const double degrees = j["flicker_step_degrees"];
+  EXPECT_GT(degrees, 0.2);  // one pixel of a 90-pixel-high view (avenue: 0.74 degrees)
+  EXPECT_LT(degrees, 1.0);
+  EXPECT_GT(j["flicker_pixels"].get<size_t>(), 100u);
+  EXPECT_GT(j["rows"][0]["temporal_pixels"].get<size_t>(), 100u);
+  const fs::path none = d / "none.json";
+  EvalRun empty = run_eval("--scene avenue --size 160x90 --rays 16 --frames 1 --techniques hard --flicker pan "
+                           "--flicker-frames 2 --flicker-step 0.6 --flicker-match 0.001 --json " + none.string());
+  EXPECT_EQ(empty.code, 2) << empty.err;
+  EXPECT_NE(empty.err.find("--flicker-step 1px"), std::string::npos) << empty.err;
+  EXPECT_FALSE(fs::exists(none));
 }
 
 TEST(EvalCli, BadInputExitsTwoWithoutFiles) {

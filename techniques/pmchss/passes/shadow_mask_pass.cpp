@@ -4,6 +4,7 @@
 #include "exec/pass_decl_builder.h"
 #include "gl/texture.h"
 #include "passes/common/shadow_receiver_decl.h"
+#include "passes/sampling/rotation_noise.h"
 #include "techniques/pmchss/passes/pmchss_pass_common.h"
 #include "techniques/pmchss/passes/pmchss_pass_types.h"
 
@@ -55,6 +56,7 @@ class ShadowMaskPass final : public exec::PassImpl {
     if (source == "min_depth") ctx.bind_sampled(p, "u_min_depth", "min_depth", linear_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     if (Status s = set_pmchss_uniforms(p.program(), ctx); !s) return s;
+    passes::set_rotation_noise(p.program(), ctx);
     ctx.dispatch_over(p, mask.width(), mask.height());
     return {};
   }
@@ -74,6 +76,7 @@ exec::PassType shadow_mask_pass_type() {
       .image_out("mask", {Format::R16F, Format::RG16F});
   for (graph::ParamDesc& d : penumbra_params()) b.param(std::move(d));
   return b.param(enum_param("source", "search", {"search", "mask", "min_depth"}, "Where the penumbra comes from"))
+      .param(passes::rotation_noise_param())
       .param(int_param("blocker_samples", 16, 4, 64, "", "Blocker search taps (source=search)"))
       .param(int_param("filter_samples", 16, 4, 64, "", "PCF taps of the shadow mask, each a 2x2 hardware comparison (Listing 6: 16)"))
       .param(bool_param("checkerboard", false, "Compute (x + y) even pixels only, packed RG16F"))

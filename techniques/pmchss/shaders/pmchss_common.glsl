@@ -15,13 +15,14 @@ uniform float u_penumbra_k;              // Listing 4's 80
 uniform float u_depth_bias;              // window depth units
 uniform int u_receiver_plane;            // 1: tilt comparisons along the receiver plane
 
-// Rotation phi of the Vogel disk for a full-resolution pixel (section 1.2: phi = 2 pi IGN).
-// Checkerboard mode multiplies y by 4 (section 3, Listing 7): with only every other pixel
-// computed, the unmodified noise "looked less random".
-float pmchss_noise_phi(ivec2 pixel, bool checker) {
+// Rotation phi of the Vogel disk of receiver `r` at `pixel` (tap_rotation, receiver_plane.glsl:
+// on the surface by default). The paper's (rotation_noise=screen) is 2 pi IGN of the pixel
+// (section 1.2); checkerboard mode multiplies its y by 4 (section 3, Listing 7): with only every
+// other pixel computed, the unmodified noise "looked less random".
+float pmchss_noise_phi(Receiver r, ivec2 pixel, bool checker) {
   vec2 centre = vec2(pixel) + 0.5;
   if (checker) centre.y *= 4.0;
-  return noise_rotation(centre);
+  return tap_rotation(r, centre);
 }
 
 // The tap at uv offset `o` and the receiver depth it is compared with: the receiver plane's depth

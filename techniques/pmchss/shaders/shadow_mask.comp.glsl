@@ -40,7 +40,7 @@ float shadow_at(ivec2 pixel, ivec2 screen, bool checker) {
   if (!pmchss_in_shadow_frustum(shadow_coord(pos.xyz))) return 1.0;
   Receiver r = pmchss_receiver(u_depth, u_normal, pixel, pos.xyz);
   vec3 c = r.coord;
-  float phi = pmchss_noise_phi(pixel, checker);
+  float phi = pmchss_noise_phi(r, pixel, checker);
 #if PENUMBRA_MAPPING == 2
   float penumbra = 1.0;  // fixed kernel: Table 1's "Regular Shadow Mask", no search at all
 #elif PENUMBRA_SOURCE == 0
