@@ -93,13 +93,26 @@ void PassContext::bind_image(GLuint unit, std::string_view slot, GLenum access, 
   const gl::Texture& t = texture(slot);
   glBindImageTexture(unit, t.id(), level, GL_FALSE, 0, access, t.info().internal_format);
   std::erase_if(images_, [&](const BoundImage& b) { return b.unit == unit; });
-  images_.push_back({unit, std::string(slot), t.format()});
+  images_.push_back({unit, std::string(slot), t.format(), graph::image_format_qualifier(t.format())});
+}
+
+void PassContext::bind_image_bits(GLuint unit, std::string_view slot, GLenum access) const {
+  const gl::Texture& t = texture(slot);
+  std::erase_if(images_, [&](const BoundImage& b) { return b.unit == unit; });
+  if (t.format() != graph::Format::R32F) {
+    binding_error_ = make_error("slot '" + std::string(slot) + "' is bound as r32ui for atomics, which needs an R32F "
+                                "texture; it holds a " + graph::format_name(t.format()) + " texture");
+    return;
+  }
+  // Image unit formats need only match the texture's in size (GL 4.5, section 8.26).
+  glBindImageTexture(unit, t.id(), 0, GL_FALSE, 0, access, GL_R32UI);
+  images_.push_back({unit, std::string(slot), t.format(), "r32ui"});
 }
 
 bool PassContext::images_match(const gl::ShaderProgram& p) const {
   const std::vector<gl::ImageDeclaration>& declarations = p.program().images();
   for (const BoundImage& bound : images_) {
-    const std::string_view want = graph::image_format_qualifier(bound.format);
+    const std::string_view want = bound.qualifier;
     const auto at_unit = [&](const gl::ImageDeclaration& d) { return d.binding == bound.unit; };
     const bool any = std::ranges::any_of(declarations, at_unit);
     if (!any || std::ranges::any_of(declarations, [&](const gl::ImageDeclaration& d) {
@@ -151,6 +164,14 @@ void PassContext::dispatch_over_tiles(const gl::ShaderProgram& p, std::string_vi
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   dispatched_over_tiles_ = true;
+}
+
+void PassContext::dispatch_indirect(const gl::ShaderProgram& p, const gl::Buffer& command, GLintptr offset) const {
+  if (binding_error_ || !images_match(p)) return;
+  glUseProgram(p.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, command.id());
+  glDispatchComputeIndirect(offset);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 void PassLibrary::add(PassType type) {

@@ -74,6 +74,9 @@ class PassContext {
   void bind_sampled(const gl::ShaderProgram& p, const char* uniform, std::string_view slot,
                     GLuint sampler = 0);
   void bind_image(GLuint unit, std::string_view slot, GLenum access, int level = 0) const;
+  // An R32F slot's storage bound as r32ui, for imageAtomicMax: the bit patterns of non-negative
+  // floats order as their values do, so the atomic MAX of the bits is the MAX of the floats.
+  void bind_image_bits(GLuint unit, std::string_view slot, GLenum access) const;
   // One thread per texel of `target`, rounded up to the program's local size.
   void dispatch_over(const gl::ShaderProgram& p, int width, int height) const;
   void dispatch_over(const gl::ShaderProgram& p, const gl::Texture& target) const {
@@ -90,6 +93,9 @@ class PassContext {
   void reset_tile_list(std::string_view slot) const;
   void bind_tile_list(GLuint binding, std::string_view slot) const;
   void dispatch_over_tiles(const gl::ShaderProgram& p, std::string_view slot) const;
+  // Work groups counted by an earlier GPU pass of the pass's own (glDispatchComputeIndirect's
+  // three counts at `offset` in `command`).
+  void dispatch_indirect(const gl::ShaderProgram& p, const gl::Buffer& command, GLintptr offset) const;
 
   // Set when a dispatch was refused: an image bound to a unit whose declared format qualifier
   // differs from the texture's format (the executor reports it as the pass's error).
@@ -122,6 +128,7 @@ class PassContext {
     GLuint unit;
     std::string slot;
     graph::Format format;
+    std::string_view qualifier;  // what the shader must declare at the unit
   };
   mutable std::vector<BoundImage> images_;
   mutable std::optional<Error> binding_error_;

@@ -3,7 +3,8 @@
 
 usage: esm_silhouette_tables.py OUT_DIR
 Medians over the rounds of each pass's median GPU time; "default" is what silhouette_finding=auto
-picks: gpu above 8,192 quads over all instances (kFindAboveQuads), read from the bench log.
+picks (silhouette_buffers.h): compute above 4,096 quads over all instances (kComputeAboveQuads),
+quads read from the bench log, or at 2048^2 and wider maps (kComputeFromMapSize); else all.
 """
 import glob
 import json
@@ -12,7 +13,12 @@ import re
 import statistics
 import sys
 
-FIND_ABOVE_QUADS = 8192
+COMPUTE_ABOVE_QUADS = 4096
+COMPUTE_FROM_MAP_SIZE = 2048
+
+
+def default_finding(quads, map_size):
+    return "compute" if quads > COMPUTE_ABOVE_QUADS or map_size >= COMPUTE_FROM_MAP_SIZE else "all"
 
 
 def name_of(scene):
@@ -51,26 +57,38 @@ def main():
     before, after = load(out, "before"), load(out, "after")
     scenes, quads = quads_per_scene(out)
     total = lambda passes: sum(passes.values())  # noqa: E731
-    print("| scene | quads | silhouette pass before | all | gpu | default | esm 512² before | esm 512² now | × "
+    print("| scene | quads | silhouette pass before | all | gpu | compute | default | esm 512² before | esm 512² now | × "
           "| plain 512² | plain 2048² | now / plain 512² | now / plain 2048² |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for s in scenes:
-        gpu = quads[s] > FIND_ABOVE_QUADS
-        now = after[(s, "esm/gpu" if gpu else "esm/all", 512)]
+        pick = default_finding(quads[s], 512)
+        now = after[(s, "esm/" + pick, 512)]
         was = before[(s, "esm", 512)]
         plain512, plain2048 = total(after[(s, "hard", 512)]), total(after[(s, "hard", 2048)])
-        print(f"| {s} | {quads[s]:,} | {was['silhouette_quads']:.3f} | {after[(s, 'esm/all', 512)]['silhouette_quads']:.3f} "
-              f"| {after[(s, 'esm/gpu', 512)]['silhouette_quads']:.3f} | {now['silhouette_quads']:.3f} ({'gpu' if gpu else 'all'}) "
+        pass_ms = lambda variant: after[(s, "esm/" + variant, 512)]["silhouette_quads"]  # noqa: E731
+        print(f"| {s} | {quads[s]:,} | {was['silhouette_quads']:.3f} | {pass_ms('all'):.3f} | {pass_ms('gpu'):.3f} "
+              f"| {pass_ms('compute'):.3f} | {now['silhouette_quads']:.3f} ({pick}) "
               f"| {total(was):.3f} | {total(now):.3f} | {total(now) / total(was):.2f} | {plain512:.3f} | {plain2048:.3f} "
               f"| {total(now) / plain512:.2f} | {total(now) / plain2048:.3f} |")
     print()
-    print("| scene | esm 512² before | esm 512² now | plain 512² | plain 2048² | now ≤ plain 512² | now / plain 2048² |")
-    print("|---|---:|---:|---:|---:|---|---:|")
+    print("At 2048² (silhouette pass, ms; the default there is compute):")
+    print()
+    print("| scene | before | all | gpu | compute |")
+    print("|---|---:|---:|---:|---:|")
+    for s in scenes:
+        cell = lambda which, t: f"{which[(s, t, 2048)]['silhouette_quads']:.3f}"  # noqa: E731
+        print(f"| {s} | {cell(before, 'esm')} | {cell(after, 'esm/all')} | {cell(after, 'esm/gpu')} "
+              f"| {cell(after, 'esm/compute')} |")
+    print()
+    print("| scene | esm 512² before | esm 512² now | compute | all | plain 512² | plain 2048² | now ≤ plain 512² "
+          "| now / plain 2048² |")
+    print("|---|---:|---:|---:|---:|---:|---:|---|---:|")
     for s in scenes:
         e512 = edge_rows(os.path.join(out, "edge", f"{s}_512.json"))
         e2048 = edge_rows(os.path.join(out, "edge", f"{s}_2048.json"))
         was = edge_rows(os.path.join(out, "edge", f"{s}_512_before.json"))["esm"]
-        print(f"| {s} | {was:.4f} | {e512['esm']:.4f} | {e512['hard']:.4f} | {e2048['hard']:.4f} "
+        print(f"| {s} | {was:.4f} | {e512['esm']:.4f} | {e512.get('esm:silhouette_finding=compute', float('nan')):.4f} "
+              f"| {e512.get('esm:silhouette_finding=all', float('nan')):.4f} | {e512['hard']:.4f} | {e2048['hard']:.4f} "
               f"| {'yes' if e512['esm'] <= e512['hard'] else 'no'} | {e512['esm'] / e2048['hard']:.2f} |")
 
 

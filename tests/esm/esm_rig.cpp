@@ -11,7 +11,9 @@ namespace penumbra::test {
 
 EsmRig::EsmRig(int width, int height, int shadow_size)
     : TechniqueRig({.width = width, .height = height, .shadow_size = shadow_size,
-                    .techniques = register_builtin_techniques}) {}
+                    .techniques = register_builtin_techniques,
+                    // the extended map, which later passes would otherwise reuse before a read()
+                    .keep_alive = {"esm_depth", "esm_edge", "esm_edge_depth"}}) {}
 
 metrics::MaskImage exact_hard_reference(TechniqueRig& rig, const scene::Scene& scene, int pixel_samples) {
   std::vector<glm::vec3> positions, normals;

@@ -26,6 +26,6 @@ TEST(EsmSmoke, BallDirectionalWritesMaskAndDebugViews) {
   metrics::MaskImage d01 = dist;
   for (float& v : d01.pixels) v = (v + 1.5f) / 4.5f;
   test::save_for_inspection("ball_distance", d01);
-  metrics::MaskImage depth = rig.read("esm", 1);
+  metrics::MaskImage depth = rig.read("esm_edge_depth");
   test::save_for_inspection("ball_depth", depth);
 }

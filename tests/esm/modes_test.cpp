@@ -74,9 +74,10 @@ TEST(EsmModes, TwoPassFallbackGivesTheSameShadow) {
   EXPECT_TRUE(has_overwrite_pass);
 }
 
-// Finding the silhouettes first (a compute pass, then only they are drawn) or drawing every quad
-// and letting the vertex shader collapse the others (the paper) writes the same map, bit for bit:
-// its edge distances and silhouette mask, and so the same shadow. Every built-in scene, and a
+// Finding the silhouettes first (a compute pass, then only they are drawn, or their texels
+// written by a second compute pass with image atomics) or drawing every quad and letting the
+// vertex shader collapse the others (the paper) writes the same map, bit for bit: both its
+// channels (edge value and edge depth), and so the same shadow. Every built-in scene, and a
 // point light's six faces.
 TEST(EsmModes, FindingSilhouettesFirstWritesTheSameMapAsDrawingEveryQuad) {
   std::vector<std::pair<std::string, scene::Scene>> scenes;
@@ -92,24 +93,56 @@ TEST(EsmModes, FindingSilhouettesFirstWritesTheSameMapAsDrawingEveryQuad) {
     const metrics::MaskImage all_shadow = rig.shadow_mask();
     const metrics::MaskImage all_distance = rig.read("esm_edge_distance");
     const metrics::MaskImage all_marks = rig.read("esm_silhouette_mask");
-    rig.set({"silhouette_finding=gpu"});
-    rig.render();
-    EXPECT_EQ(max_difference(rig.read("esm_edge_distance"), all_distance), 0.0f) << name;
-    EXPECT_EQ(max_difference(rig.read("esm_silhouette_mask"), all_marks), 0.0f) << name;
-    EXPECT_EQ(max_difference(rig.shadow_mask(), all_shadow), 0.0f) << name;
+    const metrics::MaskImage all_edge = rig.read("esm_edge"), all_edge_depth = rig.read("esm_edge_depth");
+    for (const char* finding : {"silhouette_finding=gpu", "silhouette_finding=compute"}) {
+      rig.set({finding});
+      rig.render();
+      EXPECT_EQ(max_difference(rig.read("esm_edge"), all_edge), 0.0f) << name << ", " << finding;
+      EXPECT_EQ(max_difference(rig.read("esm_edge_depth"), all_edge_depth), 0.0f) << name << ", " << finding;
+      EXPECT_EQ(max_difference(rig.read("esm_edge_distance"), all_distance), 0.0f) << name << ", " << finding;
+      EXPECT_EQ(max_difference(rig.read("esm_silhouette_mask"), all_marks), 0.0f) << name << ", " << finding;
+      EXPECT_EQ(max_difference(rig.shadow_mask(), all_shadow), 0.0f) << name << ", " << finding;
+    }
     size_t marked = 0;
     for (float m : all_marks.pixels) marked += m > 0.5f ? 1 : 0;
     EXPECT_GT(marked, 0u) << name << ": no silhouette to compare";
-    // The paper's two-pass fallback finds the silhouettes for each of its passes.
-    rig.set({"silhouette_finding=gpu", "overlap_resolve=two_pass"});
-    rig.render();
-    EXPECT_EQ(max_difference(rig.read("esm_silhouette_mask"), all_marks), 0.0f) << name << ", two passes";
-    EXPECT_LT(max_difference(rig.shadow_mask(), all_shadow), 1e-3f) << name << ", two passes";
+    // The paper's two-pass fallback finds the silhouettes for each of its passes (its overwriting
+    // pass draws them whichever way the MAX pass writes).
+    for (const char* finding : {"silhouette_finding=gpu", "silhouette_finding=compute"}) {
+      rig.set({finding, "overlap_resolve=two_pass"});
+      rig.render();
+      EXPECT_EQ(max_difference(rig.read("esm_silhouette_mask"), all_marks), 0.0f) << name << ", two passes, " << finding;
+      EXPECT_LT(max_difference(rig.shadow_mask(), all_shadow), 1e-3f) << name << ", two passes, " << finding;
+    }
   }
 }
 
 // The debug views: the silhouette mask marks a band around every silhouette and nothing else;
 // the edge-distance channel stays within the quad band (texels).
+// A scene without caster edges (a mesh with no triangles) has no quads to find, draw or write:
+// every way leaves the map at "no edge" without a GL error, and the mask is lit (at 2048^2, where
+// auto writes by compute).
+TEST(EsmModes, ASceneWithoutQuadsIsLitEveryWay) {
+  scene::Scene s = *scene::make_builtin_scene("ball");
+  s.meshes.resize(1);
+  s.meshes[0].indices.clear();
+  s.meshes[0].vertices.clear();
+  s.instances = {{0, glm::mat4(1.0f)}};
+  test::EsmRig rig(64, 48, 2048);
+  rig.set_scene(s);
+  rig.use("esm");
+  for (const char* finding : {"silhouette_finding=auto", "silhouette_finding=compute", "silhouette_finding=gpu",
+                              "silhouette_finding=all"}) {
+    rig.set({finding});
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    const Status status = rig.try_render();
+    ASSERT_TRUE(status) << finding << ": " << status.error().to_string();
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << finding;
+    EXPECT_EQ(count_between(rig.shadow_mask(), -1.0f, 0.999f), 0u) << finding << ": all lit";
+  }
+}
+
 TEST(EsmModes, DebugViewsShowTheSilhouetteBandAndItsDistances) {
   test::EsmRig rig(128, 96, 256);
   rig.set_scene(*scene::make_builtin_scene("ball"));

@@ -1,6 +1,7 @@
 // The finding pass (shaders/silhouette_find.comp.glsl): on the GPU, every quad of every instance
 // tested against the light; the list holds exactly the quads the CPU's is_silhouette keeps, with
-// each instance's own world and plane matrices, and the draw command counts six vertices each.
+// each instance's own world and plane matrices, the draw command counts six vertices each, and
+// the compute writer's dispatch one work group each.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -76,6 +77,12 @@ TEST_F(SilhouetteFinding, ListsExactlyTheQuadsTheLightSeparatesOnEveryInstance) 
     (*buffers)->find(find, light);
     const size_t expected = cpu_silhouettes(s, light);
     EXPECT_EQ((*buffers)->found(), expected) << "light " << light.x << " " << light.y << " " << light.z;
+    // The compute writer's dispatch: one work group per listed quad.
+    const std::array<std::uint32_t, 3> groups = (*buffers)->write_groups();
+    EXPECT_EQ(groups[0], expected);
+    EXPECT_EQ(groups[1], 1u);
+    EXPECT_EQ(groups[2], 1u);
+    EXPECT_TRUE((*buffers)->can_write_found());
     // Silhouettes are a small part of the quads: the raster's work follows them, not the mesh.
     EXPECT_GT(expected, 0u);
     EXPECT_LT(expected, instance_quads / 2);
@@ -93,6 +100,7 @@ TEST_F(SilhouetteFinding, AFindAfterAnotherStartsFromAnEmptyList) {
   const size_t once = (*buffers)->found();
   (*buffers)->find(find, light);
   EXPECT_EQ((*buffers)->found(), once);
+  EXPECT_EQ((*buffers)->write_groups()[0], once);
   EXPECT_EQ(once, cpu_silhouettes(s, light));
 }
 

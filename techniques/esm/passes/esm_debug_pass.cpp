@@ -13,7 +13,7 @@ class DebugPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/esm/shaders/esm_debug.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    ctx.bind_sampled(p, "u_esm", "esm");
+    ctx.bind_sampled(p, "u_edge", "edge");
     ctx.bind_image(0, "edge_distance", GL_WRITE_ONLY);
     ctx.bind_image(1, "silhouette_mask", GL_WRITE_ONLY);
     ctx.dispatch_over(p, ctx.texture("edge_distance"));
@@ -26,10 +26,10 @@ class DebugPass final : public exec::PassImpl {
 exec::PassType debug_pass_type() {
   return exec::PassDeclBuilder("esm_debug")
       .describe("Extended shadow map debug views: edge distance (texels) and silhouette mask (compute)")
-      .sampled("esm", {Format::RG32F})
+      .sampled("edge", {Format::R32F})
       .image_out("edge_distance", {Format::R32F})
       .image_out("silhouette_mask", {Format::R16F})
-      .same_size({"esm", "edge_distance", "silhouette_mask"})
+      .same_size({"edge", "edge_distance", "silhouette_mask"})
       .build<DebugPass>();
 }
 

@@ -2,7 +2,7 @@
 // the scene from the light point of view proceeds as in conventional shadow maps"), face by face:
 // the casters' depth into the depth attachment with passes/shadow_map's program and biases
 // (slope-scaled + constant polygon offset, alpha-tested casters), so that with the quads disabled
-// the shadow test is plain shadow mapping; and the RG32F map cleared to each texel's "no edge"
+// the shadow test is plain shadow mapping; and the map's two channels (edge, edge_depth) cleared to each texel's "no edge"
 // values by a compute dispatch (esm_clear.comp.glsl says why not glClearTexImage). The map depth lives in the depth attachment only (the paper's green channel): the
 // quads and the test read it there, and a depth-only raster pass costs no colour bandwidth.
 #include "exec/gpu_scene.h"
@@ -26,8 +26,8 @@ class DepthPass final : public exec::PassImpl {
     gl::ShaderProgram& clear = ctx.program({.compute = "techniques/esm/shaders/esm_clear.comp.glsl"});
     if (!clear.valid()) return *clear.last_error();
     gl::Texture& depth = ctx.texture("depth");
-    gl::Texture& esm = ctx.texture("esm");
-    Result<EsmViews> views = frame_views(ctx, esm.width());
+    gl::Texture& edge = ctx.texture("edge");
+    Result<EsmViews> views = frame_views(ctx, edge.width());
     if (!views) return views.error();
     if (attached_ != depth.id()) {
       fb_ = gl::Framebuffer();
@@ -39,14 +39,15 @@ class DepthPass final : public exec::PassImpl {
     // paper's defaults for its two-pass fallback (lit-ness 0.75 -> r = 0.25, "maximal distance"
     // g = 1), which the fallback's first quad pass overwrites; r below QUAD_MARK: no quad.
     const bool two_pass = ctx.enumeration("overlap_resolve") == "two_pass";
-    const glm::vec4 no_edge(two_pass ? 0.25f : 0.0f, two_pass ? 1.0f : 0.0f, 0.0f, 0.0f);
-    ctx.bind_image(0, "esm", GL_WRITE_ONLY);
+    const glm::vec2 no_edge(two_pass ? 0.25f : 0.0f, two_pass ? 1.0f : 0.0f);
+    ctx.bind_image(0, "edge", GL_WRITE_ONLY);
+    ctx.bind_image(1, "edge_depth", GL_WRITE_ONLY);
     clear.program().set("u_value", no_edge);
-    ctx.dispatch_over(clear, esm);
-    // The quad passes blend into `esm` as a colour attachment: make the image stores visible to
-    // them (the graph plans barriers by the slot's declared use, an attachment, so this pass adds
-    // the one its compute clear needs).
-    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    ctx.dispatch_over(clear, edge);
+    // The quad passes blend into the map as colour attachments or MAX into it by image atomics:
+    // make the image stores visible to either (the graph plans barriers by the slots' declared
+    // use, attachments, so this pass adds the one its compute clear needs).
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     if (!ctx.frame().scene) {
       depth.clear(1.0f);
       return {};
@@ -65,12 +66,13 @@ class DepthPass final : public exec::PassImpl {
 
 exec::PassType depth_pass_type() {
   return exec::PassDeclBuilder("esm_depth")
-      .describe("Extended shadow map, depth pass: depth (polygon offset) of every face; the map cleared to 'no edge' (raster)")
+      .describe("Extended shadow map, depth pass: depth (polygon offset) of every face; edge and edge depth cleared to 'no edge' (raster)")
       .imported("scene")
       .imported("light")
       .depth_out("depth")
-      .color_out("esm", {Format::RG32F})
-      .same_size({"depth", "esm"})
+      .color_out("edge", {Format::R32F})
+      .color_out("edge_depth", {Format::R32F})
+      .same_size({"depth", "edge", "edge_depth"})
       .real("slope_bias", 1.5, 0.0, 10.0, "", "Depth pass slope-scaled bias (glPolygonOffset factor)")
       .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "Depth pass constant bias (glPolygonOffset units)")
       .enumeration("overlap_resolve", "max_blend", {"max_blend", "two_pass"},

@@ -29,14 +29,14 @@ class MaskPass final : public exec::PassImpl {
   Status execute(exec::PassContext& ctx) override {
     gl::ShaderProgram& p = ctx.program({.compute = "techniques/esm/shaders/esm_mask.comp.glsl"});
     if (!p.valid()) return *p.last_error();
-    gl::Texture& esm = ctx.texture("esm");
-    Result<EsmViews> views = frame_views(ctx, esm.width());
+    Result<EsmViews> views = frame_views(ctx, ctx.texture("edge").width());
     if (!views) return views.error();
     ctx.bind_sampled(p, "u_depth", "depth");
     ctx.bind_sampled(p, "u_normal", "normal");
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map");
     if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
-    ctx.bind_sampled(p, "u_esm", "esm", nearest_.id());  // texel fetches and one gather
+    ctx.bind_sampled(p, "u_edge", "edge", nearest_.id());  // texel fetches and one gather
+    ctx.bind_sampled(p, "u_edge_depth", "edge_depth", nearest_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     const gl::Program& prog = p.program();
     if (Status s = passes::set_shadow_uniforms(prog, ctx.frame(), passes::SixFaces::read); !s) return s;  // faces_away_from_light()
@@ -60,10 +60,11 @@ class MaskPass final : public exec::PassImpl {
 exec::PassType mask_pass_type() {
   return passes::shadow_receiver_pass(
              "esm_mask", "Extended shadow map test: point-filtered depth and edge depth, bilinear edge distance (compute)")
-      .sampled("esm", {Format::RG32F})
+      .sampled("edge", {Format::R32F})
+      .sampled("edge_depth", {Format::R32F})
       .image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "mask"})
-      .same_size({"shadow_map", "esm"})
+      .same_size({"shadow_map", "edge", "edge_depth"})
       .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
             "Subtracted from the receiver depth before the depth and edge-depth comparisons")
       .real("aa_width", 1.0, 0.0, 8.0, "pixels", "Width of the shadow edge's ramp on screen: 1 = the pixel's coverage; 0 = binary")

@@ -1,10 +1,11 @@
 #pragma once
 // The pass types of the esm technique (Bujnak, extended shadow maps):
 //   esm_depth             raster: the depth map of every face into the depth attachment; the
-//                         RG32F extended map cleared to each texel's defaults (section 4)
-//   esm_silhouette_quads  raster: the silhouette quads of every mesh, MAX-blended into the
-//                         extended map, or overwriting it (the paper's two-pass fallback's first
-//                         pass) (section 4.1)
+//                         extended map's two R32F channels cleared to each texel's defaults
+//                         (section 4)
+//   esm_silhouette_quads  raster or compute: the silhouette quads of every mesh, MAX-blended into
+//                         the extended map, or overwriting it (the paper's two-pass fallback's
+//                         first pass), or written texel by texel with atomic MAX (section 4.1)
 //   esm_mask              compute: the shadow test into the frame's shadow_mask (section 3.2)
 //   esm_debug             compute: the edge-distance channel (texels) and the silhouette mask as
 //                         single-channel textures for the viewer

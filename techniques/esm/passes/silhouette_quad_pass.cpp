@@ -1,12 +1,19 @@
-// esm_silhouette_quads: this frame's silhouette quads drawn face by face into the extended
-// shadow map (Bujnak, section 4.1): found first in a compute pass over every quad of every mesh
-// instance, or, on small scenes, every quad drawn and collapsed in the vertex shader where it is
-// no silhouette (silhouette_finding; the same map either way). blend = max: MAX blending, so where quads overlap
-// the map keeps the farthest edge depth and the most shadowed edge value (the paper's "maximal
-// depth, minimal distance"); the depth pass's neutral defaults make one pass enough. blend =
-// overwrite: no blending, r and g replaced by whichever quad comes last: the first pass of the
-// paper's two-pass fallback, for hardware without that blend mode, followed by a max pass.
+// esm_silhouette_quads: this frame's silhouette quads written face by face into the extended
+// shadow map's two channels (Bujnak, section 4.1), in one of three ways (silhouette_finding; the
+// same map every way): every quad drawn and collapsed in the vertex shader where it is no
+// silhouette (the paper's, cheapest on small scenes); the silhouettes found first by a compute
+// pass over every quad of every mesh instance, and only they drawn; or found, then written texel
+// by texel by a compute pass with image atomics, without the raster.
+// blend = max: MAX blending (or atomic MAX), so where quads overlap the map keeps the farthest
+// edge depth and the most shadowed edge value (the paper's "maximal depth, minimal distance");
+// the depth pass's neutral defaults make one pass enough. blend = overwrite: no blending, both
+// channels replaced by whichever quad comes last: the first pass of the paper's two-pass
+// fallback, for hardware without that blend mode, followed by a max pass; it always draws.
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <spdlog/spdlog.h>
 
 #include "exec/gpu_scene.h"
 #include "exec/pass_decl_builder.h"
@@ -20,6 +27,9 @@ namespace {
 
 using graph::Format;
 
+// How this pass's quads reach the map this frame.
+enum class Writing { draw_all, draw_found, compute };
+
 class SilhouetteQuadPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
@@ -27,87 +37,162 @@ class SilhouetteQuadPass final : public exec::PassImpl {
     auto buffers = SilhouetteBuffers::for_scene(*ctx.frame().scene);
     if (!buffers) return buffers.error();
     buffers_ = *buffers;  // keeps the shared buffers alive while this pass exists
-    gl::ShaderProgram& find = ctx.program({.compute = "techniques/esm/shaders/silhouette_find.comp.glsl",
-                                           .defines = silhouette_shader_defines()});
-    if (!find.valid()) return *find.last_error();
+    if (buffers_->instance_quads() == 0) return {};  // no caster edges: the map stays "no edge"
+    gl::Texture& edge = ctx.texture("edge");
+    Result<EsmViews> views = frame_views(ctx, edge.width());
+    if (!views) return views.error();
+    const Writing writing = choose_writing(ctx);
+    if (writing != Writing::draw_all) {
+      gl::ShaderProgram& find = ctx.program({.compute = "techniques/esm/shaders/silhouette_find.comp.glsl",
+                                             .defines = silhouette_shader_defines()});
+      if (!find.valid()) return *find.last_error();
+      buffers_->find(find.program(), views->light);  // one light: one list for every face
+    }
+    if (writing == Writing::compute) return write(ctx, *views);
+    return draw(ctx, *views, writing);
+  }
+
+ private:
+  Writing choose_writing(const exec::PassContext& ctx) const {
+    const std::string finding = ctx.enumeration("silhouette_finding");
+    const bool max_blend = ctx.enumeration("blend") == "max";
+    // Overwriting has no order among atomics: the two-pass fallback's first pass always draws.
+    const bool compute_pays =
+        buffers_->instance_quads() > kComputeAboveQuads || ctx.texture("edge").width() >= kComputeFromMapSize;
+    if (finding == "compute" || (finding == "auto" && compute_pays)) {
+      if (max_blend && buffers_->can_write_found()) return Writing::compute;
+      if (max_blend && !warned_) {
+        spdlog::warn("esm: {} silhouette quads over the scene's instances are more work groups than this GL "
+                     "dispatches at once; drawing them instead of writing them by compute",
+                     buffers_->instance_quads());
+        warned_ = true;
+      }
+      return Writing::draw_found;
+    }
+    return finding == "gpu" ? Writing::draw_found : Writing::draw_all;
+  }
+
+  // The listed quads' texels by compute, face by face, atomic MAX into both channels: per face a
+  // pass over the listed quads that writes the short ones and lists the chunks of the long ones,
+  // then a pass over those chunks (shaders/silhouette_write.comp.glsl).
+  Status write(exec::PassContext& ctx, const EsmViews& views) {
+    const std::vector<std::pair<std::string, std::string>> defines = silhouette_shader_defines();
+    std::vector<std::pair<std::string, std::string>> listing = defines;
+    listing.emplace_back("LIST_CHUNKS", "1");
+    const char* source = "techniques/esm/shaders/silhouette_write.comp.glsl";
+    gl::ShaderProgram& quads = ctx.program({.compute = source, .defines = listing});
+    if (!quads.valid()) return *quads.last_error();
+    gl::ShaderProgram& chunks = ctx.program({.compute = source, .defines = defines});
+    if (!chunks.valid()) return *chunks.last_error();
+    for (gl::ShaderProgram* p : {&quads, &chunks}) {
+      set_quad_uniforms(ctx, p->program(), views);
+      ctx.bind_sampled(*p, "u_depth", "depth");
+    }
+    ctx.bind_image_bits(0, "edge", GL_READ_WRITE);
+    ctx.bind_image_bits(1, "edge_depth", GL_READ_WRITE);
+    buffers_->bind_found();
+    for (size_t i = 0; i < views.faces.size(); ++i) {
+      set_face_uniforms(quads.program(), views, i);
+      set_face_uniforms(chunks.program(), views, i);
+      buffers_->reset_chunks();
+      ctx.dispatch_indirect(quads, buffers_->command(), SilhouetteBuffers::kWriteCommandOffset);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+      ctx.dispatch_indirect(chunks, buffers_->chunks(), SilhouetteBuffers::kChunkDispatchOffset);
+    }
+    // The graph plans barriers by the slots' declared use (attachments): the mask's fetches and a
+    // later raster pass must see the image atomics.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    return {};
+  }
+
+  Status draw(exec::PassContext& ctx, const EsmViews& views, Writing writing) {
     gl::ShaderProgram& p = ctx.program({.vertex = "techniques/esm/shaders/silhouette_quad.vert.glsl",
                                         .fragment = "techniques/esm/shaders/silhouette_quad.frag.glsl",
                                         .defines = silhouette_shader_defines()});
     if (!p.valid()) return *p.last_error();
-    gl::Texture& esm = ctx.texture("esm");
-    Result<EsmViews> views = frame_views(ctx, esm.width());
-    if (!views) return views.error();
-    if (attached_ != esm.id()) {
+    gl::Texture& edge = ctx.texture("edge");
+    if (attached_ != edge.id()) {
       fb_ = gl::Framebuffer();
-      fb_.attach_color(0, esm);
+      fb_.attach_color(0, edge);
+      fb_.attach_color(1, ctx.texture("edge_depth"));
       if (Status s = fb_.finish(); !s) return s;
-      attached_ = esm.id();
+      attached_ = edge.id();
     }
-    const std::string& finding = ctx.enumeration("silhouette_finding");
-    const bool find_first =
-        finding == "gpu" || (finding == "auto" && buffers_->instance_quads() > kFindAboveQuads);
-    if (find_first) buffers_->find(find.program(), views->light);  // one light: one list for every face
     const gl::Program& prog = p.program();
-    set_view_uniforms(prog, *views);
-    prog.set("u_light", views->light);
-    prog.set("u_hidden_tolerance", ctx.real("hidden_edge_tolerance"));
+    set_quad_uniforms(ctx, prog, views);
     ctx.bind_sampled(p, "u_depth", "depth");
     fb_.bind();
     const bool max_blend = ctx.enumeration("blend") == "max";
-    if (max_blend) {
-      glEnablei(GL_BLEND, 0);
-      glBlendEquationi(0, GL_MAX);  // the factors do not apply to MAX
+    for (GLuint target : {0u, 1u}) {
+      if (!max_blend) continue;
+      glEnablei(GL_BLEND, target);
+      glBlendEquationi(target, GL_MAX);  // the factors do not apply to MAX
     }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glEnable(GL_SCISSOR_TEST);
-    for (size_t i = 0; i < views->faces.size(); ++i) {
-      const EsmFace& f = views->faces[i];
-      prog.set("u_face", static_cast<int>(i));  // its texel size (esm_texel_world)
+    for (size_t i = 0; i < views.faces.size(); ++i) {
+      const EsmFace& f = views.faces[i];
       glViewport(f.origin.x, f.origin.y, f.size, f.size);
       glScissor(f.origin.x, f.origin.y, f.size, f.size);
-      prog.set("u_view_proj", f.view_proj);
-      prog.set("u_inv_view_proj", glm::inverse(f.view_proj));
-      prog.set("u_tile_size", static_cast<float>(f.size));
-      prog.set("u_tile_origin", glm::vec2(f.origin));
-      if (find_first) buffers_->draw_found(prog);
+      set_face_uniforms(prog, views, i);
+      if (writing == Writing::draw_found) buffers_->draw_found(prog);
       else buffers_->draw_all(prog);
     }
     glDisable(GL_SCISSOR_TEST);
-    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glBlendEquationi(0, GL_FUNC_ADD);
-    glDisablei(GL_BLEND, 0);
+    for (GLuint target : {0u, 1u}) {
+      glBlendEquationi(target, GL_FUNC_ADD);
+      glDisablei(GL_BLEND, target);
+    }
     return {};
   }
 
- private:
+  static void set_quad_uniforms(const exec::PassContext& ctx, const gl::Program& prog, const EsmViews& views) {
+    set_view_uniforms(prog, views);
+    prog.set("u_light", views.light);
+    prog.set("u_hidden_tolerance", ctx.real("hidden_edge_tolerance"));
+  }
+
+  static void set_face_uniforms(const gl::Program& prog, const EsmViews& views, size_t i) {
+    const EsmFace& f = views.faces[i];
+    prog.set("u_face", static_cast<int>(i));  // its texel size (esm_texel_world)
+    prog.set("u_view_proj", f.view_proj);
+    prog.set("u_inv_view_proj", glm::inverse(f.view_proj));
+    prog.set("u_tile_size", static_cast<float>(f.size));
+    prog.set("u_tile_origin", glm::vec2(f.origin));
+  }
+
   std::shared_ptr<SilhouetteBuffers> buffers_;
   gl::Framebuffer fb_;
   GLuint attached_ = 0;
+  mutable bool warned_ = false;
 };
 
 }  // namespace
 
 exec::PassType silhouette_quad_pass_type() {
   exec::PassDeclBuilder b("esm_silhouette_quads");
-  b.describe("Extended shadow map: silhouette quads of every mesh, MAX-blended or overwriting (raster)")
+  b.describe("Extended shadow map: silhouette quads of every mesh, MAX-blended or overwriting (raster), or atomic MAX (compute)")
       .imported("scene")
       .imported("light")
       .sampled("depth", {Format::DEPTH32F})
-      .same_size({"depth", "esm"})
+      .same_size({"depth", "edge", "edge_depth"})
       .enumeration("blend", "max", {"max", "overwrite"},
                    "max: MAX blending (one pass); overwrite: the two-pass fallback's first pass")
       .required()
-      .enumeration("silhouette_finding", "auto", {"auto", "gpu", "all"},
+      .enumeration("silhouette_finding", "auto", {"auto", "gpu", "compute", "all"},
                    "gpu: a compute pass lists the quads that are silhouettes from the light, and only those are drawn; "
-                   "all: every quad is drawn and those that are none collapse in the vertex shader (the paper); "
-                   "auto: gpu above " + std::to_string(kFindAboveQuads) +
-                       " quads over all instances, where it pays. The map is the same")
+                   "compute: listed as for gpu, then written texel by texel by a compute pass (image atomics, no "
+                   "raster; blend=overwrite draws them); all: every quad is drawn and those that are none collapse "
+                   "in the vertex shader (the paper); auto: compute above " + std::to_string(kComputeAboveQuads) +
+                       " quads over all instances or on maps " + std::to_string(kComputeFromMapSize) +
+                       " texels wide and wider, where it pays, else all. The map is the same")
       .real("hidden_edge_tolerance", 2.0, 0.0, 1000.0, "texels",
             "Hidden edges: an edge writes no texel whose surface is nearer the light than the edge (outside its "
             "occluder) or than its lit facet's plane (inside) by more than this many texel footprints");
   graph::PassTypeDecl decl = b.decl();
-  decl.slots.push_back(blended_attachment("esm", Format::RG32F));
+  decl.slots.push_back(blended_attachment("edge", Format::R32F));
+  decl.slots.push_back(blended_attachment("edge_depth", Format::R32F));
   return {decl, [] { return std::make_unique<SilhouetteQuadPass>(); }};
 }
 

@@ -6,13 +6,17 @@
 // coordinate t runs 0 -> 1 across the band, so the edge passes through t = 1/3 and t = 1/2 lies
 // 0.707 texels outside the edge (section 4.2): BAND_OUT = 2 sqrt 2, BAND_IN = sqrt 2.
 //
-// The map is RG32F, 8 bytes a texel (it was RGBA32F with an unused channel: 16):
-//   r  QUAD_MARK + 1 - edge_transfer(t) where a quad wrote, the INVERTED lit-ness, so MAX
-//      blending of overlapping quads keeps the most shadowed one ("minimal distance, maximal
-//      value", section 4.1); below QUAD_MARK where none did (the depth pass's "no edge" value).
-//      The mark is the silhouette mask: every quad value lies above every "no edge" value, so
-//      MAX keeps it, and one gather of r says whether a footprint has quads.
-//   g  edge depth: window depth of the silhouette edge at this texel (MAX: the farthest edge)
+// The map is two R32F textures, 4 bytes a texel each (an RG32F pair until the silhouettes could be
+// written by compute: image atomics take single 32-bit channels):
+//   edge        QUAD_MARK + 1 - edge_transfer(t) where a quad wrote, the INVERTED lit-ness, so
+//               MAX blending of overlapping quads keeps the most shadowed one ("minimal distance,
+//               maximal value", section 4.1); below QUAD_MARK where none did (the depth pass's
+//               "no edge" value). The mark is the silhouette mask: every quad value lies above
+//               every "no edge" value, so MAX keeps it, and one gather says whether a footprint
+//               has quads.
+//   edge_depth  window depth of the silhouette edge at this texel (MAX: the farthest edge)
+// Both are non-negative where a quad wrote or MAX blending cleared them, so a compute writer can
+// MAX their bit patterns as unsigned integers.
 // The map depth, the paper's green channel, is the depth attachment, which the quads and the
 // shadow test read (with its polygon offset, as plain shadow mapping).
 const float QUAD_MARK = 2.0;        // added to r where a quad wrote; "no edge" r is < 1
@@ -35,7 +39,7 @@ float edge_transfer(float t) { return clamp((t - GUARD_T) / (1.0 - GUARD_T), 0.0
 // Lit-ness of the edge itself.
 float edge_litness() { return edge_transfer(EDGE_T); }
 
-// A map texel as (inverted lit-ness, 0, edge depth, mask), from the stored RG32F pair.
+// A map texel as (inverted lit-ness, 0, edge depth, mask), from its stored (edge, edge_depth).
 vec4 esm_decode(vec2 stored) {
   bool quad = stored.x >= QUAD_MARK;
   return vec4(quad ? stored.x - QUAD_MARK : stored.x, 0.0, stored.y, quad ? 1.0 : 0.0);

@@ -6,12 +6,12 @@
 #include "esm_common.glsl"
 layout(r32f, binding = 0) uniform writeonly image2D u_edge_distance;
 layout(r16f, binding = 1) uniform writeonly image2D u_silhouette_mask;
-uniform sampler2D u_esm;
+uniform sampler2D u_edge;  // the edge channel (esm_common.glsl)
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(u_edge_distance)))) return;
-  vec4 t = esm_decode(texelFetch(u_esm, p, 0).rg);
+  vec4 t = esm_decode(vec2(texelFetch(u_edge, p, 0).r, 0.0));
   float mask = t.a > 0.5 ? 1.0 : 0.0;
   // Inverse of edge_transfer(quad_coordinate(d)) above the guard zone.
   float quad_t = (1.0 - t.r) * (1.0 - GUARD_T) + GUARD_T;

@@ -31,7 +31,8 @@ layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;   // the depth pass's biased depth (nearest texel fetches)
-uniform sampler2D u_esm;          // RG32F extended map (esm_common.glsl; texel fetches, a gather of r)
+uniform sampler2D u_edge;         // the extended map's two channels (esm_common.glsl): texel
+uniform sampler2D u_edge_depth;   // fetches, and a gather of the edge's marks
 uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
 uniform float u_boundary;         // lit-ness of the shadow boundary (edge_transfer at the edge + shift)
 uniform float u_aa_width;         // pixels; 0 = a binary edge
@@ -58,6 +59,8 @@ float receiver_slope(vec3 cx, vec3 cy) {
 }
 
 bool has_quad(vec4 texel) { return texel.a > 0.5; }
+
+vec4 map_texel(ivec2 p) { return esm_decode(vec2(texelFetch(u_edge, p, 0).r, texelFetch(u_edge_depth, p, 0).r)); }
 
 // The receiver (depth z) is behind the texel's edge by more than `edge_bias`.
 bool behind_edge(vec4 texel, float z, float edge_bias) { return z > texel.b + edge_bias; }
@@ -95,10 +98,10 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   bool a = z > texelFetch(u_shadow_map, nearest, 0).r;
   // Away from silhouettes (most receivers) no texel of the footprint has a quad: one gather of
   // the mask channel says so, and the answer is the plain test's.
-  vec4 marked = textureGather(u_esm, (vec2(i0) + 1.0) / vec2(textureSize(u_esm, 0)), 0);
+  vec4 marked = textureGather(u_edge, (vec2(i0) + 1.0) / vec2(textureSize(u_edge, 0)), 0);
   if (all(lessThan(marked, vec4(QUAD_MARK)))) return a ? 0.0 : 1.0;
-  vec4 t00 = esm_decode(texelFetch(u_esm, i0, 0).rg), t10 = esm_decode(texelFetch(u_esm, i0 + ivec2(1, 0), 0).rg);
-  vec4 t01 = esm_decode(texelFetch(u_esm, i0 + ivec2(0, 1), 0).rg), t11 = esm_decode(texelFetch(u_esm, i0 + ivec2(1, 1), 0).rg);
+  vec4 t00 = map_texel(i0), t10 = map_texel(i0 + ivec2(1, 0));
+  vec4 t01 = map_texel(i0 + ivec2(0, 1)), t11 = map_texel(i0 + ivec2(1, 1));
   float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
   float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
   vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);

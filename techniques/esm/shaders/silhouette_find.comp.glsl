@@ -3,7 +3,8 @@
 // one thread per quad of an instance; a quad is a silhouette when the light is in front of
 // exactly one of its two planes (is_silhouette in silhouette_quads.h, and the vertex shader's
 // own choice of direction). Silhouettes are appended to the list and counted, six indices
-// each, into the indirect draw command, so the raster draws only them.
+// each, into the indirect draw command, so the raster draws only them, and one work group each
+// into the indirect dispatch of the compute writer (silhouette_write.comp.glsl).
 layout(local_size_x = SILHOUETTE_FIND_GROUP) in;
 #include "silhouette_records.glsl"
 layout(std430, binding = SILHOUETTE_COMMAND_BINDING) buffer SilhouetteCommand {
@@ -12,6 +13,9 @@ layout(std430, binding = SILHOUETTE_COMMAND_BINDING) buffer SilhouetteCommand {
   uint first_index;
   uint base_vertex;
   uint base_instance;
+  uint write_groups;  // glDispatchComputeIndirect: x, y, z
+  uint write_groups_y;
+  uint write_groups_z;
 };
 uniform vec4 u_light;          // homogeneous: (position, 1), or (-direction, 0)
 uniform int u_instance_count;
@@ -46,7 +50,10 @@ void main() {
   }
   uint at = found ? atomicAdd(group_found, 1u) : 0u;
   barrier();
-  if (gl_LocalInvocationIndex == 0u && group_found > 0u) group_base = atomicAdd(index_count, 6u * group_found) / 6u;
+  if (gl_LocalInvocationIndex == 0u && group_found > 0u) {
+    group_base = atomicAdd(index_count, 6u * group_found) / 6u;
+    atomicAdd(write_groups, group_found);
+  }
   barrier();
   if (found) silhouettes[group_base + at] = uvec2(instance, quad);
 }

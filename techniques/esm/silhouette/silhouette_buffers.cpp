@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <mutex>
 
@@ -25,6 +26,29 @@ static_assert(sizeof(InstanceRecord) == 144);
 struct DrawCommand {
   std::uint32_t count = 0, instance_count = 1, first_index = 0, base_vertex = 0, base_instance = 0;
 };
+
+// What find() writes (shaders/silhouette_find.comp.glsl's SilhouetteCommand): the draw command,
+// then glDispatchComputeIndirect's for the compute writer, one work group per silhouette.
+struct FindCommand {
+  DrawCommand draw;
+  std::uint32_t write_groups = 0, write_groups_y = 1, write_groups_z = 1;
+};
+static_assert(offsetof(FindCommand, write_groups) == SilhouetteBuffers::kWriteCommandOffset);
+
+// The chunk list's header (shaders/silhouette_write.comp.glsl's SilhouetteChunks), before its
+// (list entry, first column) pairs.
+struct ChunkHeader {
+  std::uint32_t count = 0, groups_done = 0;
+  std::uint32_t groups = 0, groups_y = 1, groups_z = 1;  // the second pass's dispatch
+  std::uint32_t capacity = 0, unused0 = 0, unused1 = 0;
+};
+static_assert(offsetof(ChunkHeader, groups) == SilhouetteBuffers::kChunkDispatchOffset);
+static_assert(sizeof(ChunkHeader) == 32);
+
+// Chunks the list holds per instance quad (and at least kMinChunks): a chunk is four columns of
+// a quad, and only quads longer than two chunks are listed (longer ones are written in place
+// once it is full). FlightHelmet at 2048^2 lists about 0.4 a quad.
+constexpr size_t kChunksPerQuad = 4, kMinChunks = 65536;
 
 // One remembered scene, by GpuScene::serial() (an address is reused by the next scene made
 // there), like the Embree cache.
@@ -69,6 +93,7 @@ std::vector<std::pair<std::string, std::string>> silhouette_shader_defines() {
           {"SILHOUETTE_INSTANCES_BINDING", std::to_string(SilhouetteBindings::instances)},
           {"SILHOUETTE_LIST_BINDING", std::to_string(SilhouetteBindings::list)},
           {"SILHOUETTE_COMMAND_BINDING", std::to_string(SilhouetteBindings::command)},
+          {"SILHOUETTE_CHUNKS_BINDING", std::to_string(SilhouetteBindings::chunks)},
           {"SILHOUETTE_FIND_GROUP", std::to_string(kFindGroupSize)}};
 }
 
@@ -123,8 +148,14 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
     out->quads_ = gl::Buffer::from<SilhouetteQuad>(quads);
     out->instances_ = gl::Buffer::from<InstanceRecord>(instances);
     out->list_ = gl::Buffer(list_bytes, nullptr, false);
-    const DrawCommand empty;
+    const FindCommand empty;
     out->command_ = gl::Buffer(sizeof empty, &empty, true);
+    GLint max_groups = 0;
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups);
+    out->max_write_groups_ = static_cast<size_t>(std::max(max_groups, 0));
+    out->chunk_capacity_ = std::min({std::max(kChunksPerQuad * slots, kMinChunks), out->max_write_groups_,
+                                     (largest - sizeof(ChunkHeader)) / (2 * sizeof(std::uint32_t))});
+    out->chunks_ = gl::Buffer(sizeof(ChunkHeader) + out->chunk_capacity_ * 2 * sizeof(std::uint32_t), nullptr, true);
     // List entry i is vertices 4i .. 4i + 3, two triangles (0, 1, 2), (2, 1, 3): indexed, so the
     // two shared corners are shaded once (four vertex invocations a quad, not six).
     std::vector<std::uint32_t> indices(slots * 6);
@@ -158,7 +189,7 @@ void SilhouetteBuffers::bind_records(const gl::Buffer& list) const {
 
 void SilhouetteBuffers::find(const gl::Program& program, const glm::vec4& light) const {
   if (instance_quads_ == 0) return;
-  const DrawCommand empty;
+  const FindCommand empty;
   glNamedBufferSubData(command_.id(), 0, sizeof empty, &empty);
   bind_records(list_);
   command_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::command);
@@ -176,6 +207,19 @@ void SilhouetteBuffers::find(const gl::Program& program, const glm::vec4& light)
 
 void SilhouetteBuffers::draw_found(const gl::Program& program) const { draw(program, list_, command_); }
 
+void SilhouetteBuffers::bind_found() const {
+  bind_records(list_);
+  chunks_.bind_base(GL_SHADER_STORAGE_BUFFER, SilhouetteBindings::chunks);
+}
+
+void SilhouetteBuffers::reset_chunks() const {
+  if (instance_quads_ == 0) return;
+  ChunkHeader empty;
+  empty.capacity = static_cast<std::uint32_t>(chunk_capacity_);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // after the previous face's passes
+  glNamedBufferSubData(chunks_.id(), 0, sizeof empty, &empty);
+}
+
 void SilhouetteBuffers::draw_all(const gl::Program& program) const { draw(program, all_list_, all_command_); }
 
 void SilhouetteBuffers::draw(const gl::Program& program, const gl::Buffer& list, const gl::Buffer& command) const {
@@ -192,9 +236,16 @@ void SilhouetteBuffers::draw(const gl::Program& program, const gl::Buffer& list,
 
 size_t SilhouetteBuffers::found() const {
   if (instance_quads_ == 0) return 0;
-  DrawCommand c;
+  FindCommand c;
   glGetNamedBufferSubData(command_.id(), 0, sizeof c, &c);
-  return c.count / 6;
+  return c.draw.count / 6;
+}
+
+std::array<std::uint32_t, 3> SilhouetteBuffers::write_groups() const {
+  if (instance_quads_ == 0) return {0, 1, 1};
+  FindCommand c;
+  glGetNamedBufferSubData(command_.id(), 0, sizeof c, &c);
+  return {c.write_groups, c.write_groups_y, c.write_groups_z};
 }
 
 }  // namespace penumbra::esm
