@@ -53,7 +53,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
   }
 
  private:
-  Writing choose_writing(const exec::PassContext& ctx) const {
+  Writing choose_writing(const exec::PassContext& ctx) {
     const std::string finding = ctx.enumeration("silhouette_finding");
     const bool max_blend = ctx.enumeration("blend") == "max";
     // Overwriting has no order among atomics: the two-pass fallback's first pass always draws.
@@ -111,22 +111,25 @@ class SilhouetteQuadPass final : public exec::PassImpl {
                                         .defines = silhouette_shader_defines()});
     if (!p.valid()) return *p.last_error();
     gl::Texture& edge = ctx.texture("edge");
-    if (attached_ != edge.id()) {
+    gl::Texture& edge_depth = ctx.texture("edge_depth");
+    // The pool may hand either channel another texture in a new plan: rebuild when either moved.
+    if (attached_ != std::pair(edge.id(), edge_depth.id())) {
       fb_ = gl::Framebuffer();
       fb_.attach_color(0, edge);
-      fb_.attach_color(1, ctx.texture("edge_depth"));
+      fb_.attach_color(1, edge_depth);
       if (Status s = fb_.finish(); !s) return s;
-      attached_ = edge.id();
+      attached_ = {edge.id(), edge_depth.id()};
     }
     const gl::Program& prog = p.program();
     set_quad_uniforms(ctx, prog, views);
     ctx.bind_sampled(p, "u_depth", "depth");
     fb_.bind();
     const bool max_blend = ctx.enumeration("blend") == "max";
-    for (GLuint target : {0u, 1u}) {
-      if (!max_blend) continue;
-      glEnablei(GL_BLEND, target);
-      glBlendEquationi(target, GL_MAX);  // the factors do not apply to MAX
+    if (max_blend) {
+      for (GLuint target : {0u, 1u}) {
+        glEnablei(GL_BLEND, target);
+        glBlendEquationi(target, GL_MAX);  // the factors do not apply to MAX
+      }
     }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -164,8 +167,8 @@ class SilhouetteQuadPass final : public exec::PassImpl {
 
   std::shared_ptr<SilhouetteBuffers> buffers_;
   gl::Framebuffer fb_;
-  GLuint attached_ = 0;
-  mutable bool warned_ = false;
+  std::pair<GLuint, GLuint> attached_{0, 0};  // the edge and edge_depth textures fb_ holds
+  bool warned_ = false;
 };
 
 }  // namespace
