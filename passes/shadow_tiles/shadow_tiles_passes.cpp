@@ -22,7 +22,8 @@ class ShadowPlanesPass final : public exec::PassImpl {
     ctx.bind_sampled(p, "u_shadow_map", "shadow_map", raw_->id());
     ctx.bind_image(0, "planes", GL_WRITE_ONLY);
     const gl::Texture& planes = ctx.texture("planes");
-    ctx.dispatch_over(p, planes);  // an invocation per block
+    // The work group's height is the invocations that share a block (shadow_planes.comp.glsl).
+    ctx.dispatch_over(p, planes.width(), planes.height() * p.program().local_size().y);
     return {};
   }
 

@@ -1,8 +1,11 @@
 // The shared tile classifier (passes/shadow_tiles) under pcf and pcss: with tiles on, a filter's
 // mask is its untiled mask (the classifier only skips work whose answer it knows), the classifier
 // never calls a tile with reference penumbra in it lit or umbra, it skips a real share of the tiles,
-// and a scene without a caster gives an all-lit mask with (almost) every tile skipped.
+// a scene without a caster gives an all-lit mask with (almost) every tile skipped, and the planes
+// it classifies with bound the shadow map.
 #include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -142,6 +145,57 @@ TEST(TiledFilters, SceneWithoutCasterIsAllLitAndAlmostNoTileFiltered) {
       lit += tile_class_of(c) == TileClass::lit;
     }
     EXPECT_GE(lit, classes.pixels.size() * 9 / 10) << lit << " of " << classes.pixels.size() << " tiles lit";
+  }
+}
+
+// The classifier's picture of the map (shadow_planes.comp.glsl): per block a plane and the range
+// of the residuals about it. The range must hold every drawn texel of the block, cleared texels
+// must mark it, and where the light sees one flat surface the fitted plane must be that surface
+// (a range near zero). 1020 texels: blocks of 9 rows, more than the invocations sharing a block.
+TEST(ShadowPlanes, ResidualRangeHoldsEveryDrawnTexelOfItsBlock) {
+  for (const int map : {1024, 1020}) {
+    TechniqueRig rig({.width = kW, .height = kH, .shadow_size = map, .techniques = register_builtin_techniques,
+                      .keep_alive = {"shadow_map", "shadow_planes"}});
+    for (const std::string name : {"ball", "colonnade", "showcase"}) {
+      SCOPED_TRACE(name + " at " + std::to_string(map));
+      rig.render_frame(builtin_scene(name), "pcss", {"tiles=true"});
+      const metrics::MaskImage depth = rig.read("shadow_map");
+      std::vector<metrics::MaskImage> plane;
+      for (int c = 0; c < 4; ++c) plane.push_back(rig.read("shadow_planes", c));
+      ASSERT_EQ(depth.width, map);
+      const int blocks = plane[0].width, block = (map + blocks - 1) / blocks;
+      // Read-back rows run top to bottom; the shader's texel rows bottom to top.
+      auto at = [](const metrics::MaskImage& m, int x, int gl_y) { return m.pixels[size_t(m.height - 1 - gl_y) * m.width + x]; };
+      size_t drawn_blocks = 0, flat_blocks = 0, outside = 0;
+      for (int by = 0; by < blocks; ++by)
+        for (int bx = 0; bx < blocks; ++bx) {
+          // The shader's blocks: those past the map's edge (127 x 9 > 1020) repeat its last texels.
+          const glm::ivec2 first = glm::min(glm::ivec2(bx, by) * block, glm::ivec2(map - 1));
+          const glm::ivec2 last = glm::min(first + block, glm::ivec2(map));
+          const glm::vec2 centre = 0.5f * glm::vec2(first + last);
+          const glm::vec2 slope = glm::vec2(at(plane[0], bx, by), at(plane[1], bx, by)) / float(map);
+          const float lo = at(plane[2], bx, by), hi = at(plane[3], bx, by);
+          bool cleared = false;
+          for (int y = first.y; y < last.y; ++y)
+            for (int x = first.x; x < last.x; ++x) {
+              const float d = at(depth, x, y);
+              if (d >= 1.0f) {
+                cleared = true;
+                continue;
+              }
+              const float residual = d - glm::dot(glm::vec2(x, y) + 0.5f - centre, slope);
+              outside += residual < lo - 1e-6f || (hi < 1e29f && residual > hi + 1e-6f);
+            }
+          EXPECT_EQ(cleared, hi >= 1e29f) << "block " << bx << ", " << by;
+          if (cleared) continue;
+          ++drawn_blocks;
+          flat_blocks += hi - lo < 1e-6f;
+        }
+      EXPECT_EQ(outside, 0u) << "drawn texels outside their block's residual range";
+      // The ground fills most of what the light sees; casters' outlines widen a few blocks' range.
+      EXPECT_GT(drawn_blocks, 0u);
+      EXPECT_GT(double(flat_blocks), 0.5 * double(drawn_blocks)) << flat_blocks << " of " << drawn_blocks;
+    }
   }
 }
 
