@@ -28,6 +28,14 @@ FAMILIES = ["hard", "pcf", "pcss", "pmchss", "mpg", "sspcss", "esm"]
 COLOURS = dict(zip(FAMILIES, ["#777777", "#1f77b4", "#000000", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"]))
 SHADOW_MAP_PASS = "shadow_map"
 PCSS_LIMIT = 1.25
+# Filters that can run over the shared classifier's penumbra tiles only (`tiles`, off by default):
+# their masks equal the untiled ones (tests/baseline/tiled_filters_test.cpp), so a tiled variant has
+# its technique's quality and its own cost (bench rows only).
+TILED = {"pcf": "pcf:tiles=true", "pcss": "pcss:tiles=true"}
+
+
+def untiled(label):
+    return next((t for t, tiled in TILED.items() if tiled == label), label)
 
 
 def family(label):
@@ -97,9 +105,10 @@ class Scene:
         self.edge512 = rows_by_label(os.path.join(raw, "edge512", name + ".json"))
         self.flicker = {m: rows_by_label(os.path.join(raw, "flicker_" + m, name + ".json")) for m in ("pan", "light")}
         self.cost = bench_split(os.path.join(raw, "bench", name + ".json"))
+        self.tiled = [TILED[t] for t in TILED if t in self.quality and TILED[t] in self.cost]
 
     def rmse(self, label):
-        return self.quality[label]["rmse_penumbra"]
+        return self.quality[untiled(label)]["rmse_penumbra"]
 
     def total_ms(self, label):
         own, sm = self.cost.get(label, (float("nan"), 0.0))
@@ -113,15 +122,16 @@ def fmt(value, digits=4):
 def scene_table(s):
     pcss = s.rmse("pcss")
     lines = ["| variant | penumbra RMSE | × PCSS | SSIM | edge error (exact hard) | flicker, pan | flicker, light "
-             "| GPU ms, technique | GPU ms, shadow map |", "|---|---|---|---|---|---|---|---|---|"]
+             "| GPU ms, technique | GPU ms, tiled | GPU ms, shadow map |", "|---|---|---|---|---|---|---|---|---|---|"]
     for label in s.labels:
         q = s.quality[label]
         edge = s.edge.get(label, {}).get("edge_error")
         pan = s.flicker["pan"].get(label, {}).get("flicker")
         light = s.flicker["light"].get(label, {}).get("flicker")
         own, sm = s.cost.get(label, (float("nan"), float("nan")))
+        tiled = s.cost[TILED[label]][0] if TILED.get(label) in s.tiled else None
         lines.append(f"| `{label}` | {fmt(q['rmse_penumbra'])} | {fmt(q['rmse_penumbra'] / pcss, 2)} | {fmt(q['ssim'])} "
-                     f"| {fmt(edge)} | {fmt(pan)} | {fmt(light)} | {fmt(own, 3)} | {fmt(sm, 3)} |")
+                     f"| {fmt(edge)} | {fmt(pan)} | {fmt(light)} | {fmt(own, 3)} | {fmt(tiled, 3)} | {fmt(sm, 3)} |")
     return "\n".join(lines)
 
 
@@ -130,11 +140,15 @@ def quality_cost_chart(scenes, path):
     rows = (len(scenes) + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.4 * rows), squeeze=False)
     for ax, s in zip(axes.flat, scenes):
-        points = [(s.total_ms(l), s.rmse(l), l) for l in s.labels if s.total_ms(l) == s.total_ms(l)]
+        points = [(s.total_ms(l), s.rmse(l), l) for l in s.labels + s.tiled if s.total_ms(l) == s.total_ms(l)]
         for cost, error, label in points:
             f = family(label)
+            colour = COLOURS.get(f, "#444444")
+            if label in s.tiled:  # the technique's own error at the tiled cost
+                ax.scatter(cost, error, facecolors="none", edgecolors=colour, marker="o", s=22, zorder=3)
+                continue
             marker = "o" if label == f else ("s" if "@paper" in label else "^")
-            ax.scatter(cost, error, c=COLOURS.get(f, "#444444"), marker=marker, s=22, zorder=3)
+            ax.scatter(cost, error, c=colour, marker=marker, s=22, zorder=3)
         front = pareto(points)
         ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=0.8, zorder=2)
         for cost, error, label in front:
@@ -149,6 +163,7 @@ def quality_cost_chart(scenes, path):
     handles = [plt.Line2D([], [], marker="o", ls="", color=COLOURS[f], label=f) for f in FAMILIES]
     handles += [plt.Line2D([], [], marker="^", ls="", color="k", label="variant"),
                 plt.Line2D([], [], marker="s", ls="", color="k", label="@paper"),
+                plt.Line2D([], [], marker="o", ls="", color="k", markerfacecolor="none", label="tiles=true"),
                 plt.Line2D([], [], ls="--", color="k", label="Pareto front")]
     fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=7, frameon=False)
     fig.tight_layout(rect=(0, 0.04, 1, 1))
@@ -253,15 +268,16 @@ def targets(scenes, cost):
         below = sum(s.rmse(t) < s.rmse("pcf") for s in scenes if t in s.quality)
         lines.append(f"| `{t}` defaults: below PCF everywhere | below on {below}/{len(ratios)} "
                      f"| {'yes' if below == len(ratios) else 'no'} |")
-    dominating = []
-    for s in scenes:
-        winners = [l for l in s.labels if family(l) in CONTACT_HARDENING and l == family(l)
-                   and s.rmse(l) < s.rmse("pcss") and s.total_ms(l) < s.total_ms("pcss")]
-        if winners:
-            dominating.append(s.title)
+    def beating(pcss_label):
+        """Scenes where a contact-hardening default has less error than PCSS and costs less than pcss_label."""
+        return [s.title for s in scenes if pcss_label in s.cost and any(
+            family(l) in CONTACT_HARDENING and l == family(l) and s.rmse(l) < s.rmse("pcss")
+            and s.total_ms(l) < s.total_ms(pcss_label) for l in s.labels)]
+
+    dominating = beating("pcss")
     on_front = []
     for s in scenes:
-        points = [(s.total_ms(l), s.rmse(l), l) for l in s.labels if s.total_ms(l) == s.total_ms(l)]
+        points = [(s.total_ms(l), s.rmse(l), l) for l in s.labels + s.tiled if s.total_ms(l) == s.total_ms(l)]
         front = {label for _, _, label in pareto(points)}
         if any(t in front for t in CONTACT_HARDENING):
             on_front.append(s.title)
@@ -269,6 +285,12 @@ def targets(scenes, cost):
                  f"| on {len(on_front)}/{len(scenes)} | {'yes' if 2 * len(on_front) > len(scenes) else 'no'} |")
     lines.append(f"| a contact-hardening default beats PCSS in error and cost on most scenes | on {len(dominating)}"
                  f"/{len(scenes)} ({', '.join(dominating) or 'none'}) | {'yes' if 2 * len(dominating) > len(scenes) else 'no'} |")
+    with_tiled = [s for s in scenes if TILED["pcss"] in s.tiled]
+    if with_tiled:
+        tiled_pcss = beating(TILED["pcss"])
+        lines.append(f"| … and beats tiled PCSS (`{TILED['pcss']}`) in error and cost on most scenes | on {len(tiled_pcss)}"
+                     f"/{len(with_tiled)} ({', '.join(tiled_pcss) or 'none'}) "
+                     f"| {'yes' if 2 * len(tiled_pcss) > len(with_tiled) else 'no'} |")
 
     def own(label, size, shadow):
         m = [r["own"] for r in cost if r["label"] == label and r["size"] == size and r["map"] == shadow]

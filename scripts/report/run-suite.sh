@@ -10,6 +10,8 @@
 #        SIX_FACE_SCENES="room" (those lit by a point light inside them: no pmchss min-filter row),
 #        COST=1|0|only (the cost sweep below: with the scenes, skipped, or alone). The device
 #        allows 10 minutes a command: run the suite in parts into one OUT_DIR.
+#        STEPS="eval edge flicker gallery bench" (the per-scene steps to run; default all: e.g.
+#        STEPS=bench times the scenes again into an OUT_DIR that holds the rest).
 #
 # Per scene (progress on stderr, one line per step):
 #   eval/   1920x1080, 2048^2 map: penumbra RMSE, SSIM, ... of every variant (ray-traced, RAYS)
@@ -18,7 +20,8 @@
 #   flicker_pan/, flicker_light/   960x540: temporal change over 6 frames of a 0.25 deg/frame
 #           camera pan / light motion, minus the reference's
 #   gallery/  480x270: each variant's mask and error heat map, and the reference's mask
-#   bench/  1920x1080, 2048^2: median GPU ms of each pass over FRAMES frames after 10 warm-up
+#   bench/  1920x1080, 2048^2: median GPU ms of each pass over FRAMES frames after 10 warm-up, of
+#           every variant and of pcf and pcss over the classifier's penumbra tiles (tiles=true)
 # Once: cost/ every cost variant on colonnade at 720p/1080p/4K x 1024^2/2048^2/4096^2 maps.
 # Timings run with debug_outputs=false (debug views are not part of any method).
 set -euo pipefail
@@ -31,14 +34,18 @@ SIX_FACE_SCENES="${SIX_FACE_SCENES-room}"
 scenes+=("$@")
 cost_part="${COST:-1}"
 [ "$cost_part" = only ] && scenes=()
+steps=" ${STEPS:-eval edge flicker gallery bench} "
+step() { [[ $steps == *" $1 "* ]]; }
 
 # What the report compares. Quality: every technique at its defaults, its paper preset and its
 # main variants. Cost: the same, plus Sterna's Table 1 rows (regular shadow mask = fixed kernel).
 soft="hard,pcf,pcss,pmchss,pmchss:variant=regular,pmchss:variant=min_filter,pmchss@paper"
 soft+=",mpg,mpg:alteration=gaussian,mpg:alteration=pcf,mpg@paper,sspcss,sspcss:filter=poisson,sspcss@paper,esm"
 hard="hard,esm,esm@paper"
+# Timed only: their masks are pcf's and pcss's (tests/baseline/tiled_filters_test.cpp).
+tiled="pcf:tiles=true,pcss:tiles=true"
 cost="hard,pcf,pcss,pmchss,pmchss:variant=regular,pmchss:variant=regular:penumbra_mapping=fixed"
-cost+=",mpg,mpg:alteration=gaussian,sspcss,sspcss:filter=poisson,esm"
+cost+=",mpg,mpg:alteration=gaussian,sspcss,sspcss:filter=poisson,esm,pcss:tiles=true"
 # MPG's claim: cost flat in the kernel size (every pixel at the largest kernel: kernel_mode=fixed).
 cost+=",mpg:kernel_mode=fixed:max_kernel=9,mpg:kernel_mode=fixed:max_kernel=19,mpg:kernel_mode=fixed:max_kernel=29"
 
@@ -78,26 +85,36 @@ for scene in "${scenes[@]}"; do
   # Scenes lit by a point light inside them (six faces): pmchss's min-filter variant refuses them.
   soft_all="$soft"
   case " $SIX_FACE_SCENES " in *" $name "*) soft="${soft/,pmchss:variant=min_filter/}" ;; esac
-  log "$i/${#scenes[@]} $name: quality at $size"
-  run "$out/eval/$name.log" "$bin" eval "${common[@]}" --techniques "$soft" --size "$size" --rays "$rays" \
-    --json "$out/eval/$name.json"
-  log "$i/${#scenes[@]} $name: edge error against the exact hard shadow"
-  run "$out/edge/$name.log" "$bin" eval "${common[@]}" --techniques "$hard" --size "$size" --light-size 0 \
-    --set pixel_samples=4 --json "$out/edge/$name.json"
-  log "$i/${#scenes[@]} $name: edge error of esm with a 512^2 map"
-  run "$out/edge512/$name.log" "$bin" eval "${common[@]}" --techniques esm --size "$size" --light-size 0 \
-    --set pixel_samples=4 --shadow-size 512 --json "$out/edge512/$name.json"
-  for motion in pan light; do
-    log "$i/${#scenes[@]} $name: flicker ($motion) at $flicker_size"
-    run "$out/flicker_$motion/$name.log" "$bin" eval "${common[@]}" --techniques "$soft" --size "$flicker_size" \
-      --rays $((rays / 2)) --flicker "$motion" --flicker-frames "$flicker_frames" --json "$out/flicker_$motion/$name.json"
-  done
-  log "$i/${#scenes[@]} $name: gallery at $gallery_size"
-  run "$out/gallery/$name.log" "$bin" eval "${common[@]}" --techniques "$soft" --size "$gallery_size" --rays "$rays" \
-    --masks "$out/gallery" --heatmaps "$out/gallery" --json "$out/gallery/$name.json"
-  log "$i/${#scenes[@]} $name: GPU time, $frames frames"
-  run "$out/bench/$name.log" "$bin" bench --context "$context" --scenes "$scene" --techniques "$soft" --size "$size" \
-    --shadow-size 2048 --frames "$frames" --set debug_outputs=false --json "$out/bench/$name.json"
+  if step eval; then
+    log "$i/${#scenes[@]} $name: quality at $size"
+    run "$out/eval/$name.log" "$bin" eval "${common[@]}" --techniques "$soft" --size "$size" --rays "$rays" \
+      --json "$out/eval/$name.json"
+  fi
+  if step edge; then
+    log "$i/${#scenes[@]} $name: edge error against the exact hard shadow"
+    run "$out/edge/$name.log" "$bin" eval "${common[@]}" --techniques "$hard" --size "$size" --light-size 0 \
+      --set pixel_samples=4 --json "$out/edge/$name.json"
+    log "$i/${#scenes[@]} $name: edge error of esm with a 512^2 map"
+    run "$out/edge512/$name.log" "$bin" eval "${common[@]}" --techniques esm --size "$size" --light-size 0 \
+      --set pixel_samples=4 --shadow-size 512 --json "$out/edge512/$name.json"
+  fi
+  if step flicker; then
+    for motion in pan light; do
+      log "$i/${#scenes[@]} $name: flicker ($motion) at $flicker_size"
+      run "$out/flicker_$motion/$name.log" "$bin" eval "${common[@]}" --techniques "$soft" --size "$flicker_size" \
+        --rays $((rays / 2)) --flicker "$motion" --flicker-frames "$flicker_frames" --json "$out/flicker_$motion/$name.json"
+    done
+  fi
+  if step gallery; then
+    log "$i/${#scenes[@]} $name: gallery at $gallery_size"
+    run "$out/gallery/$name.log" "$bin" eval "${common[@]}" --techniques "$soft" --size "$gallery_size" --rays "$rays" \
+      --masks "$out/gallery" --heatmaps "$out/gallery" --json "$out/gallery/$name.json"
+  fi
+  if step bench; then
+    log "$i/${#scenes[@]} $name: GPU time, $frames frames"
+    run "$out/bench/$name.log" "$bin" bench --context "$context" --scenes "$scene" --techniques "$soft,$tiled" \
+      --size "$size" --shadow-size 2048 --frames "$frames" --set debug_outputs=false --json "$out/bench/$name.json"
+  fi
   soft="$soft_all"
 done
 if [ "$cost_part" = 0 ]; then log "done: $out"; exit 0; fi
