@@ -15,8 +15,9 @@
 // height), each reading row pairs k, k + BLOCK_THREADS, ... of it two columns at a time, with
 // textureGather; their sums meet in shared memory. The reads bound the pass: a texelFetch per
 // texel, twice, took 41.7 us at 2048^2 on an H200 whether one invocation walked a whole block
-// (65,536 invocations) or eight shared it; a work group per block with shared-memory trees took
-// 381 us on an H100.
+// (65,536 invocations) or eight shared it; gathers with 1, 2, 4 or 8 invocations a block took
+// 35.8, 25.4, 20.1 and 27.7 us (docs/results/tiles.md); a work group per block with shared-memory
+// trees took 381 us on an H100.
 #define GROUP_BLOCKS 8
 #define BLOCK_THREADS 4
 layout(local_size_x = GROUP_BLOCKS, local_size_y = BLOCK_THREADS) in;
@@ -36,8 +37,46 @@ const int kMoments = 9;  // n, x, y, xx, yy, xy, d, xd, yd (x, y: texels from th
 
 shared float s_moments[GROUP_BLOCKS][BLOCK_THREADS][kMoments];
 shared vec2 s_slope[GROUP_BLOCKS];
-shared vec2 s_range[GROUP_BLOCKS][BLOCK_THREADS];  // residual min, max over the rows' drawn texels
+shared vec2 s_range[GROUP_BLOCKS][BLOCK_THREADS];  // residual min, max over the invocation's texels
 shared bool s_cleared[GROUP_BLOCKS][BLOCK_THREADS];
+
+// The block's drawn texels, walked by this invocation: its row pairs, two columns at a time. The
+// first walk (FIT) sums the moments of the least-squares fit, the second the residuals' range
+// about `slope`.
+const int FIT = 0, RESIDUALS = 1;
+void walk_block(int walk, ivec2 first, ivec2 last, vec2 centre, vec2 slope, inout float m[kMoments],
+                inout bool cleared, inout vec2 range) {
+  uint thread = gl_LocalInvocationID.y;
+  ivec2 map_size = textureSize(u_shadow_map, 0);
+  for (int y = first.y + 2 * int(thread); y < last.y; y += 2 * BLOCK_THREADS)
+    for (int x = first.x; x < last.x; x += 2) {
+      vec4 quad = texel_quad(ivec2(x, y), vec2(map_size));
+      for (int k = 0; k < 4; ++k) {
+        ivec2 t = ivec2(x, y) + kQuad[k];
+        if (any(greaterThanEqual(t, last))) continue;  // past the block: the next block's, or clamped
+        float d = quad[k];
+        if (d >= 1.0) {
+          cleared = true;
+          continue;
+        }
+        vec2 o = vec2(t) + 0.5 - centre;
+        if (walk == RESIDUALS) {
+          float residual = d - dot(o, slope);
+          range = vec2(min(range.x, residual), max(range.y, residual));
+          continue;
+        }
+        m[0] += 1.0;
+        m[1] += o.x;
+        m[2] += o.y;
+        m[3] += o.x * o.x;
+        m[4] += o.y * o.y;
+        m[5] += o.x * o.y;
+        m[6] += d;
+        m[7] += o.x * d;
+        m[8] += o.y * d;
+      }
+    }
+}
 
 void main() {
   uint slot = gl_LocalInvocationID.x, thread = gl_LocalInvocationID.y;
@@ -53,30 +92,8 @@ void main() {
   float m[kMoments];
   for (int k = 0; k < kMoments; ++k) m[k] = 0.0;
   bool cleared = false;
-  if (inside)
-    for (int y = first.y + 2 * int(thread); y < last.y; y += 2 * BLOCK_THREADS)
-      for (int x = first.x; x < last.x; x += 2) {
-        vec4 quad = texel_quad(ivec2(x, y), vec2(map_size));
-        for (int k = 0; k < 4; ++k) {
-          ivec2 t = ivec2(x, y) + kQuad[k];
-          if (any(greaterThanEqual(t, last))) continue;  // past the block: the next block's, or clamped
-          float d = quad[k];
-          if (d >= 1.0) {
-            cleared = true;
-            continue;
-          }
-          vec2 o = vec2(t) + 0.5 - centre;
-          m[0] += 1.0;
-          m[1] += o.x;
-          m[2] += o.y;
-          m[3] += o.x * o.x;
-          m[4] += o.y * o.y;
-          m[5] += o.x * o.y;
-          m[6] += d;
-          m[7] += o.x * d;
-          m[8] += o.y * d;
-        }
-      }
+  vec2 range = vec2(kCleared, -kCleared);  // residual min, max
+  if (inside) walk_block(FIT, first, last, centre, vec2(0.0), m, cleared, range);
   for (int k = 0; k < kMoments; ++k) s_moments[slot][thread][k] = m[k];
   s_cleared[slot][thread] = cleared;
   barrier();
@@ -102,27 +119,14 @@ void main() {
   barrier();
 
   vec2 slope = s_slope[slot];
-  float lo = kCleared, hi = -kCleared;
-  if (inside)
-    for (int y = first.y + 2 * int(thread); y < last.y; y += 2 * BLOCK_THREADS)
-      for (int x = first.x; x < last.x; x += 2) {
-        vec4 quad = texel_quad(ivec2(x, y), vec2(map_size));
-        for (int k = 0; k < 4; ++k) {
-          ivec2 t = ivec2(x, y) + kQuad[k];
-          if (any(greaterThanEqual(t, last)) || quad[k] >= 1.0) continue;
-          float residual = quad[k] - dot(vec2(t) + 0.5 - centre, slope);
-          lo = min(lo, residual);
-          hi = max(hi, residual);
-        }
-      }
-  s_range[slot][thread] = vec2(lo, hi);
+  if (inside) walk_block(RESIDUALS, first, last, centre, slope, m, cleared, range);
+  s_range[slot][thread] = range;
   barrier();
 
   if (thread != 0u || !inside) return;
   for (uint r = 1u; r < BLOCK_THREADS; ++r) {
-    lo = min(lo, s_range[slot][r].x);
-    hi = max(hi, s_range[slot][r].y);
+    range = vec2(min(range.x, s_range[slot][r].x), max(range.y, s_range[slot][r].y));
     cleared = cleared || s_cleared[slot][r];
   }
-  imageStore(u_planes, q, vec4(slope * vec2(map_size), lo, cleared ? kCleared : hi));
+  imageStore(u_planes, q, vec4(slope * vec2(map_size), range.x, cleared ? kCleared : range.y));
 }
