@@ -44,6 +44,7 @@ class MaskPass final : public exec::PassImpl {
     prog.set("u_depth_bias", ctx.real("depth_bias"));
     prog.set("u_boundary", boundary_litness(ctx.real("boundary_shift")));
     prog.set("u_aa_width", ctx.real("aa_width"));
+    prog.set("u_edge_bias_texels", ctx.real("edge_bias"));
     prog.set("u_inv_view_proj", glm::inverse(ctx.frame().projection() * ctx.frame().view()));
     gl::Texture& mask = ctx.texture("mask");
     prog.set("u_screen", glm::vec2(mask.width(), mask.height()));
@@ -69,6 +70,9 @@ exec::PassType mask_pass_type() {
             "Subtracted from the receiver depth before the depth and edge-depth comparisons")
       .real("aa_width", 1.0, 0.0, 8.0, "pixels", "Width of the shadow edge's ramp on screen: 1 = the pixel's coverage; 0 = binary")
       .real("boundary_shift", 0.0, 0.0, 2.0, "texels", "Shadow boundary moved outwards from the silhouette edge (the paper: 0.707)")
+      .real("edge_bias", 0.5, 0.0, 8.0, "texels",
+            "A receiver is behind a silhouette edge when deeper than the edge by more than its own depth change over this "
+            "many texels (a surface running into its own edge is not shadowed by it); nearer receivers get the plain test")
       .build<MaskPass>();
 }
 

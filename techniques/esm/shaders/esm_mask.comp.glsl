@@ -36,6 +36,7 @@ uniform sampler2D u_edge_depth;   // fetches, and a gather of the edge's marks
 uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
 uniform float u_boundary;         // lit-ness of the shadow boundary (edge_transfer at the edge + shift)
 uniform float u_aa_width;         // pixels; 0 = a binary edge
+uniform float u_edge_bias_texels; // edge_bias: texels of the receiver's own depth slope
 uniform mat4 u_inv_view_proj;     // camera clip -> world
 uniform vec2 u_screen;            // pixels
 
@@ -110,10 +111,13 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   vec2 px = vec2(pixel) + 0.5;
   vec3 cx = esm_map_coord(face, on_plane(px + vec2(1.0, 0.0), world, normal)).xyz - c.xyz;
   vec3 cy = esm_map_coord(face, on_plane(px + vec2(0.0, 1.0), world, normal)).xyz - c.xyz;
-  // Behind an edge by more than the receiver's own surface changes depth over the quad band: a
+  // Behind an edge by more than the receiver's own surface changes depth over edge_bias texels: a
   // surface running into its own silhouette edge (an open sheet seen from its lit side, the lit
-  // facet next to a sharp edge) is not shadowed by that edge.
-  float edge_bias = receiver_slope(cx, cy) * (BAND_IN + 1.5);
+  // facet next to a sharp edge) is not shadowed by that edge. Half a texel (it was the band plus
+  // the footprint, 2.9 texels): receivers nearer the edge than that got the plain map's staircase,
+  // at contacts and where casters meet; edge error on an H200 at 1080p, 512^2 map, 0.91-1.00x
+  // on 11 scenes (docs/results/esm.md, 2026-11-29).
+  float edge_bias = receiver_slope(cx, cy) * u_edge_bias_texels;
   // b: the footprint has quads and the receiver is behind every one of their edges. Where it is
   // in front of one (overlapping quads keep the farthest edge depth, MAX), the edge distances
   // say nothing reliable about it: plain shadow mapping (the paper: near overlaps the method
