@@ -13,7 +13,7 @@ EsmRig::EsmRig(int width, int height, int shadow_size)
     : TechniqueRig({.width = width, .height = height, .shadow_size = shadow_size,
                     .techniques = register_builtin_techniques,
                     // the extended map, which later passes would otherwise reuse before a read()
-                    .keep_alive = {"esm_depth", "esm_edge", "esm_edge_depth"}}) {}
+                    .keep_alive = {"esm_depth", "esm_edge", "esm_edge_depth", "esm_edge_near"}}) {}
 
 metrics::MaskImage exact_hard_reference(TechniqueRig& rig, const scene::Scene& scene, int pixel_samples) {
   std::vector<glm::vec3> positions, normals;

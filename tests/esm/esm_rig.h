@@ -14,7 +14,7 @@ namespace penumbra::test {
 class EsmRig : public TechniqueRig {
  public:
   // width x height screen, shadow_size^2 shadow map; no technique until use(). The extended map's
-  // textures (esm_depth, esm_edge, esm_edge_depth) stay readable after a frame.
+  // textures (esm_depth, esm_edge, esm_edge_depth, esm_edge_near) stay readable after a frame.
   EsmRig(int width, int height, int shadow_size);
 };
 

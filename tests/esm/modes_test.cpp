@@ -76,8 +76,8 @@ TEST(EsmModes, TwoPassFallbackGivesTheSameShadow) {
 
 // Finding the silhouettes first (a compute pass, then only they are drawn, or their texels
 // written by a second compute pass with image atomics) or drawing every quad and letting the
-// vertex shader collapse the others (the paper) writes the same map, bit for bit: both its
-// channels (edge value and edge depth), and so the same shadow. Every built-in scene, and a
+// vertex shader collapse the others (the paper) writes the same map, bit for bit: all its
+// channels (edge value, edge depth, nearest edge), and so the same shadow. Every built-in scene, and a
 // point light's six faces.
 TEST(EsmModes, FindingSilhouettesFirstWritesTheSameMapAsDrawingEveryQuad) {
   std::vector<std::pair<std::string, scene::Scene>> scenes;
@@ -94,11 +94,13 @@ TEST(EsmModes, FindingSilhouettesFirstWritesTheSameMapAsDrawingEveryQuad) {
     const metrics::MaskImage all_distance = rig.read("esm_edge_distance");
     const metrics::MaskImage all_marks = rig.read("esm_silhouette_mask");
     const metrics::MaskImage all_edge = rig.read("esm_edge"), all_edge_depth = rig.read("esm_edge_depth");
+    const metrics::MaskImage all_edge_near = rig.read("esm_edge_near");
     for (const char* finding : {"silhouette_finding=gpu", "silhouette_finding=compute"}) {
       rig.set({finding});
       rig.render();
       EXPECT_EQ(max_difference(rig.read("esm_edge"), all_edge), 0.0f) << name << ", " << finding;
       EXPECT_EQ(max_difference(rig.read("esm_edge_depth"), all_edge_depth), 0.0f) << name << ", " << finding;
+      EXPECT_EQ(max_difference(rig.read("esm_edge_near"), all_edge_near), 0.0f) << name << ", " << finding;
       EXPECT_EQ(max_difference(rig.read("esm_edge_distance"), all_distance), 0.0f) << name << ", " << finding;
       EXPECT_EQ(max_difference(rig.read("esm_silhouette_mask"), all_marks), 0.0f) << name << ", " << finding;
       EXPECT_EQ(max_difference(rig.shadow_mask(), all_shadow), 0.0f) << name << ", " << finding;

@@ -2,7 +2,7 @@
 // the scene from the light point of view proceeds as in conventional shadow maps"), face by face:
 // the casters' depth into the depth attachment with passes/shadow_map's program and biases
 // (slope-scaled + constant polygon offset, alpha-tested casters), so that with the quads disabled
-// the shadow test is plain shadow mapping; and the map's two channels (edge, edge_depth) cleared to each texel's "no edge"
+// the shadow test is plain shadow mapping; and the map's three channels (edge, edge_depth, edge_near) cleared to each texel's "no edge"
 // values by a compute dispatch (esm_clear.comp.glsl says why not glClearTexImage). The map depth lives in the depth attachment only (the paper's green channel): the
 // quads and the test read it there, and a depth-only raster pass costs no colour bandwidth.
 #include "exec/gpu_scene.h"
@@ -42,6 +42,7 @@ class DepthPass final : public exec::PassImpl {
     const glm::vec2 no_edge(two_pass ? 0.25f : 0.0f, two_pass ? 1.0f : 0.0f);
     ctx.bind_image(0, "edge", GL_WRITE_ONLY);
     ctx.bind_image(1, "edge_depth", GL_WRITE_ONLY);
+    ctx.bind_image(2, "edge_near", GL_WRITE_ONLY);
     clear.program().set("u_value", no_edge);
     ctx.dispatch_over(clear, edge);
     // The quad passes blend into the map as colour attachments or MAX into it by image atomics:
@@ -66,13 +67,14 @@ class DepthPass final : public exec::PassImpl {
 
 exec::PassType depth_pass_type() {
   return exec::PassDeclBuilder("esm_depth")
-      .describe("Extended shadow map, depth pass: depth (polygon offset) of every face; edge and edge depth cleared to 'no edge' (raster)")
+      .describe("Extended shadow map, depth pass: depth (polygon offset) of every face; edge, edge depth and nearest edge cleared to 'no edge' (raster)")
       .imported("scene")
       .imported("light")
       .depth_out("depth")
       .color_out("edge", {Format::R32F})
       .color_out("edge_depth", {Format::R32F})
-      .same_size({"depth", "edge", "edge_depth"})
+      .color_out("edge_near", {Format::R32F})
+      .same_size({"depth", "edge", "edge_depth", "edge_near"})
       .real("slope_bias", 1.5, 0.0, 10.0, "", "Depth pass slope-scaled bias (glPolygonOffset factor)")
       .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "Depth pass constant bias (glPolygonOffset units)")
       .enumeration("overlap_resolve", "max_blend", {"max_blend", "two_pass"},

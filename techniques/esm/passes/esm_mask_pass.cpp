@@ -37,6 +37,7 @@ class MaskPass final : public exec::PassImpl {
     if (nearest_.id() == 0) nearest_ = gl::Sampler(gl::Sampler::Filter::nearest, gl::Sampler::Wrap::clamp);
     ctx.bind_sampled(p, "u_edge", "edge", nearest_.id());  // texel fetches and one gather
     ctx.bind_sampled(p, "u_edge_depth", "edge_depth", nearest_.id());
+    ctx.bind_sampled(p, "u_edge_near", "edge_near", nearest_.id());
     ctx.bind_image(0, "mask", GL_WRITE_ONLY);
     const gl::Program& prog = p.program();
     if (Status s = passes::set_shadow_uniforms(prog, ctx.frame(), passes::SixFaces::read); !s) return s;  // faces_away_from_light()
@@ -45,6 +46,7 @@ class MaskPass final : public exec::PassImpl {
     prog.set("u_boundary", boundary_litness(ctx.real("boundary_shift")));
     prog.set("u_aa_width", ctx.real("aa_width"));
     prog.set("u_edge_bias_texels", ctx.real("edge_bias"));
+    prog.set("u_nearest_edge", ctx.boolean("nearest_edge") ? 1 : 0);
     prog.set("u_inv_view_proj", glm::inverse(ctx.frame().projection() * ctx.frame().view()));
     gl::Texture& mask = ctx.texture("mask");
     prog.set("u_screen", glm::vec2(mask.width(), mask.height()));
@@ -60,12 +62,13 @@ class MaskPass final : public exec::PassImpl {
 
 exec::PassType mask_pass_type() {
   return passes::shadow_receiver_pass(
-             "esm_mask", "Extended shadow map test: point-filtered depth and edge depth, bilinear edge distance (compute)")
+             "esm_mask", "Extended shadow map test: point-filtered depth and edge depths, bilinear edge distance (compute)")
       .sampled("edge", {Format::R32F})
       .sampled("edge_depth", {Format::R32F})
+      .sampled("edge_near", {Format::R32F})
       .image_out("mask", {Format::R16F})
       .same_size({"depth", "normal", "mask"})
-      .same_size({"shadow_map", "edge", "edge_depth"})
+      .same_size({"shadow_map", "edge", "edge_depth", "edge_near"})
       .real("depth_bias", 0.0005, 0.0, 0.05, "window depth",
             "Subtracted from the receiver depth before the depth and edge-depth comparisons")
       .real("aa_width", 1.0, 0.0, 8.0, "pixels", "Width of the shadow edge's ramp on screen: 1 = the pixel's coverage; 0 = binary")
@@ -73,6 +76,9 @@ exec::PassType mask_pass_type() {
       .real("edge_bias", 0.5, 0.0, 8.0, "texels",
             "A receiver is behind a silhouette edge when deeper than the edge by more than its own depth change over this "
             "many texels (a surface running into its own edge is not shadowed by it); nearer receivers get the plain test")
+      .boolean("nearest_edge", true,
+               "A receiver not behind a texel's farthest edge (its own, at a contact) but behind its nearest one uses that "
+               "edge alone; false: the plain test there, as before the map kept the nearest edge")
       .build<MaskPass>();
 }
 

@@ -1,14 +1,16 @@
 // esm_silhouette_quads: this frame's silhouette quads written face by face into the extended
-// shadow map's two channels (Bujnak, section 4.1), in one of three ways (silhouette_finding; the
+// shadow map's three channels (Bujnak, section 4.1), in one of three ways (silhouette_finding; the
 // same map every way): every quad drawn and collapsed in the vertex shader where it is no
 // silhouette (the paper's, cheapest on small scenes); the silhouettes found first by a compute
 // pass over every quad of every mesh instance, and only they drawn; or found, then written texel
 // by texel by a compute pass with image atomics, without the raster.
 // blend = max: MAX blending (or atomic MAX), so where quads overlap the map keeps the farthest
-// edge depth and the most shadowed edge value (the paper's "maximal depth, minimal distance");
-// the depth pass's neutral defaults make one pass enough. blend = overwrite: no blending, both
-// channels replaced by whichever quad comes last: the first pass of the paper's two-pass
-// fallback, for hardware without that blend mode, followed by a max pass; it always draws.
+// edge depth and the most shadowed edge value (the paper's "maximal depth, minimal distance"), and
+// the nearest edge with its own value (esm_common.glsl; by image atomics on either path);
+// the depth pass's neutral defaults make one pass enough. blend = overwrite: no blending, edge
+// and edge depth replaced by whichever quad comes last (the nearest edge still by atomic MAX):
+// the first pass of the paper's two-pass fallback, for hardware without that blend mode,
+// followed by a max pass; it always draws.
 #include <string>
 #include <utility>
 #include <vector>
@@ -72,7 +74,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
     return finding == "gpu" ? Writing::draw_found : Writing::draw_all;
   }
 
-  // The listed quads' texels by compute, face by face, atomic MAX into both channels: per face a
+  // The listed quads' texels by compute, face by face, atomic MAX into the three channels: per face a
   // pass over the listed quads that writes the short ones and lists the chunks of the long ones,
   // then a pass over those chunks (shaders/silhouette_write.comp.glsl).
   Status write(exec::PassContext& ctx, const EsmViews& views) {
@@ -90,6 +92,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
     }
     ctx.bind_image_bits(0, "edge", GL_READ_WRITE);
     ctx.bind_image_bits(1, "edge_depth", GL_READ_WRITE);
+    ctx.bind_image_bits(2, "edge_near", GL_READ_WRITE);
     buffers_->bind_found();
     for (size_t i = 0; i < views.faces.size(); ++i) {
       set_face_uniforms(quads.program(), views, i);
@@ -120,6 +123,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       if (Status s = fb_.finish(); !s) return s;
       attached_ = {edge.id(), edge_depth.id()};
     }
+    ctx.bind_image_bits(2, "edge_near", GL_READ_WRITE);  // an image slot: the graph plans its barriers
     const gl::Program& prog = p.program();
     set_quad_uniforms(ctx, prog, views);
     ctx.bind_sampled(p, "u_depth", "depth");
@@ -179,7 +183,8 @@ exec::PassType silhouette_quad_pass_type() {
       .imported("scene")
       .imported("light")
       .sampled("depth", {Format::DEPTH32F})
-      .same_size({"depth", "edge", "edge_depth"})
+      .image_inout("edge_near", {Format::R32F})  // image atomics, from either path
+      .same_size({"depth", "edge", "edge_depth", "edge_near"})
       .enumeration("blend", "max", {"max", "overwrite"},
                    "max: MAX blending (one pass); overwrite: the two-pass fallback's first pass")
       .required()

@@ -6,6 +6,7 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(r32f, binding = 0) uniform writeonly image2D u_edge;
 layout(r32f, binding = 1) uniform writeonly image2D u_edge_depth;
+layout(r32f, binding = 2) uniform writeonly image2D u_edge_near;  // 0: no edge, in either mode
 uniform vec2 u_value;  // (edge, edge_depth)
 
 void main() {
@@ -13,4 +14,5 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_edge)))) return;
   imageStore(u_edge, p, vec4(u_value.x));
   imageStore(u_edge_depth, p, vec4(u_value.y));
+  imageStore(u_edge_near, p, vec4(0.0));
 }

@@ -6,7 +6,7 @@
 // coordinate t runs 0 -> 1 across the band, so the edge passes through t = 1/3 and t = 1/2 lies
 // 0.707 texels outside the edge (section 4.2): BAND_OUT = 2 sqrt 2, BAND_IN = sqrt 2.
 //
-// The map is two R32F textures, 4 bytes a texel each (an RG32F pair until the silhouettes could be
+// The map is three R32F textures, 4 bytes a texel each (an RG32F pair until the silhouettes could be
 // written by compute: image atomics take single 32-bit channels):
 //   edge        QUAD_MARK + 1 - edge_transfer(t) where a quad wrote, the INVERTED lit-ness, so
 //               MAX blending of overlapping quads keeps the most shadowed one ("minimal distance,
@@ -15,7 +15,12 @@
 //               every "no edge" value, so MAX keeps it, and one gather says whether a footprint
 //               has quads.
 //   edge_depth  window depth of the silhouette edge at this texel (MAX: the farthest edge)
-// Both are non-negative where a quad wrote or MAX blending cleared them, so a compute writer can
+//   edge_near   the NEAREST edge at this texel, depth and lit-ness together (esm_encode_near): 0
+//               where no quad wrote. Where silhouettes of two surfaces meet within the band (a
+//               contact, a beam on a column, a facet next to another part of the same mesh), the
+//               farthest edge is often the receiver's own, which never shadows it; the nearest
+//               one, in front of the receiver, does (the issue's "two edges per texel").
+// All are non-negative where a quad wrote or MAX blending cleared them, so a compute writer can
 // MAX their bit patterns as unsigned integers.
 // The map depth, the paper's green channel, is the depth attachment, which the quads and the
 // shadow test read (with its polygon offset, as plain shadow mapping).
@@ -45,5 +50,23 @@ vec4 esm_decode(vec2 stored) {
   return vec4(quad ? stored.x - QUAD_MARK : stored.x, 0.0, stored.y, quad ? 1.0 : 0.0);
 }
 
-// What a quad writes: inverted lit-ness and edge depth.
-vec2 esm_encode_quad(float inverted_litness, float edge_depth) { return vec2(QUAD_MARK + inverted_litness, edge_depth); }
+// edge_near packs the edge's depth, rounded up to 1/65534 steps and inverted, as the integer part
+// (1 .. 65535: MAX keeps the nearest edge) and its inverted lit-ness in 1/256 steps as the fraction
+// (a float's 24 bits hold both below 65536). Rounding the depth up makes "behind it" stricter.
+const float NEAR_STEPS = 65535.0;
+float esm_encode_near(float inverted_litness, float edge_depth) {
+  float steps = ceil(clamp(edge_depth, 0.0, 1.0) * (NEAR_STEPS - 1.0));
+  return NEAR_STEPS - steps + floor(clamp(inverted_litness, 0.0, 1.0) * 255.0 + 0.5) / 256.0;
+}
+
+// The nearest edge as a texel (inverted lit-ness, 0, edge depth, mask), from edge_near.
+vec4 esm_decode_near(float stored) {
+  if (stored < 1.0) return vec4(0.0);
+  float steps = floor(stored);
+  return vec4((stored - steps) * (256.0 / 255.0), 0.0, (NEAR_STEPS - steps) / (NEAR_STEPS - 1.0), 1.0);
+}
+
+// What a quad writes: (edge, edge_depth, edge_near).
+vec3 esm_encode_quad(float inverted_litness, float edge_depth) {
+  return vec3(QUAD_MARK + inverted_litness, edge_depth, esm_encode_near(inverted_litness, edge_depth));
+}

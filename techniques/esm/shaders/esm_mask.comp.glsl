@@ -8,8 +8,9 @@
 // The paper's lookup on (depth flag, edge flag, distance) is a table; with float targets and a
 // compute shader it becomes:
 //   a = the receiver is behind the occluder at the nearest texel (plain shadow mapping);
-//   b = the footprint's texels have silhouette quads and the receiver is behind all their edges
-//       (the paper reads only the nearest texel's edge depth; see below for the footprint);
+//   b = the footprint's texels have silhouette quads and the receiver is behind an edge of each:
+//       the farthest, or else the nearest, which then stands alone (map_texel; the paper reads only
+//       the nearest texel's single edge depth);
 //   !b  -> a ? 0 : 1, exactly the plain shadow map;
 //   a, and the nearest texel is not inside its edge -> 0: it is covered by an occluder other
 //       than that edge's own surface (another object whose edge crosses, Figures 9-11), which no
@@ -31,12 +32,14 @@ layout(r16f, binding = 0) uniform writeonly image2D u_mask;
 uniform sampler2D u_depth;     // gbuffer_depth: linear view depth, 0 = background
 uniform sampler2D u_normal;    // gbuffer_normal: octahedral
 uniform sampler2D u_shadow_map;   // the depth pass's biased depth (nearest texel fetches)
-uniform sampler2D u_edge;         // the extended map's two channels (esm_common.glsl): texel
+uniform sampler2D u_edge;         // the extended map's three channels (esm_common.glsl): texel
 uniform sampler2D u_edge_depth;   // fetches, and a gather of the edge's marks
+uniform sampler2D u_edge_near;
 uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
 uniform float u_boundary;         // lit-ness of the shadow boundary (edge_transfer at the edge + shift)
 uniform float u_aa_width;         // pixels; 0 = a binary edge
 uniform float u_edge_bias_texels; // edge_bias: texels of the receiver's own depth slope
+uniform bool u_nearest_edge;      // nearest_edge: read edge_near where the farthest edge is not in front
 uniform mat4 u_inv_view_proj;     // camera clip -> world
 uniform vec2 u_screen;            // pixels
 
@@ -61,10 +64,21 @@ float receiver_slope(vec3 cx, vec3 cy) {
 
 bool has_quad(vec4 texel) { return texel.a > 0.5; }
 
-vec4 map_texel(ivec2 p) { return esm_decode(vec2(texelFetch(u_edge, p, 0).r, texelFetch(u_edge_depth, p, 0).r)); }
-
 // The receiver (depth z) is behind the texel's edge by more than `edge_bias`.
 bool behind_edge(vec4 texel, float z, float edge_bias) { return z > texel.b + edge_bias; }
+
+// A map texel as the receiver at depth z sees it. Behind its farthest edge: every quad of the texel
+// (the most shadowed lit-ness, MAX). Else behind its nearest edge only: that edge alone, as if the
+// farther ones (the receiver's own, at a contact) were not there. Else the texel keeps its farthest
+// edge, and the receiver, behind none, gets the plain test (rule b below). The nearest edge took
+// esm's edge error at 512^2, 1080p, H200 from 0.0199 to 0.0146 on colonnade and 0.0416 to 0.0327
+// on Fox, 0.74-1.01x on 11 scenes (docs/results/esm.md, 2026-11-29).
+vec4 map_texel(ivec2 p, float z, float edge_bias) {
+  vec4 all_quads = esm_decode(vec2(texelFetch(u_edge, p, 0).r, texelFetch(u_edge_depth, p, 0).r));
+  if (!u_nearest_edge || !has_quad(all_quads) || behind_edge(all_quads, z, edge_bias)) return all_quads;
+  vec4 nearest_edge = esm_decode_near(texelFetch(u_edge_near, p, 0).r);
+  return has_quad(nearest_edge) && behind_edge(nearest_edge, z, edge_bias) ? nearest_edge : all_quads;
+}
 
 // Lit-ness of a texel for a receiver at depth z behind all the footprint's edges: a quad's, unless
 // the texel lies outside its edge and an occluder there is in front of the receiver (that
@@ -101,11 +115,6 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   // the mask channel says so, and the answer is the plain test's.
   vec4 marked = textureGather(u_edge, (vec2(i0) + 1.0) / vec2(textureSize(u_edge, 0)), 0);
   if (all(lessThan(marked, vec4(QUAD_MARK)))) return a ? 0.0 : 1.0;
-  vec4 t00 = map_texel(i0), t10 = map_texel(i0 + ivec2(1, 0));
-  vec4 t01 = map_texel(i0 + ivec2(0, 1)), t11 = map_texel(i0 + ivec2(1, 1));
-  float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
-  float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
-  vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);
   // The receiver's tangent plane in the map: where the neighbouring pixels' camera rays meet it
   // (texels and window depth per pixel along x and y).
   vec2 px = vec2(pixel) + 0.5;
@@ -118,10 +127,15 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   // at contacts and where casters meet; edge error on an H200 at 1080p, 512^2 map, 0.91-1.00x
   // on 11 scenes (docs/results/esm.md, 2026-11-29).
   float edge_bias = receiver_slope(cx, cy) * u_edge_bias_texels;
-  // b: the footprint has quads and the receiver is behind every one of their edges. Where it is
-  // in front of one (overlapping quads keep the farthest edge depth, MAX), the edge distances
-  // say nothing reliable about it: plain shadow mapping (the paper: near overlaps the method
-  // "behaves almost like standard shadow mapping").
+  vec4 t00 = map_texel(i0, z, edge_bias), t10 = map_texel(i0 + ivec2(1, 0), z, edge_bias);
+  vec4 t01 = map_texel(i0 + ivec2(0, 1), z, edge_bias), t11 = map_texel(i0 + ivec2(1, 1), z, edge_bias);
+  float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
+  float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
+  vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);
+  // b: the footprint has quads and the receiver is behind an edge of each (map_texel: the farthest,
+  // else the nearest). Where it is in front of both, the edge distances say nothing reliable about
+  // it: plain shadow mapping (the paper: near overlaps the method "behaves almost like standard
+  // shadow mapping").
   int quads = int(has_quad(t00)) + int(has_quad(t10)) + int(has_quad(t01)) + int(has_quad(t11));
   int behind = int(has_quad(t00) && behind_edge(t00, z, edge_bias)) + int(has_quad(t10) && behind_edge(t10, z, edge_bias)) +
                int(has_quad(t01) && behind_edge(t01, z, edge_bias)) + int(has_quad(t11) && behind_edge(t11, z, edge_bias));

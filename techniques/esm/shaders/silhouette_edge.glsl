@@ -94,7 +94,7 @@ bool nearer_surface(ivec2 map_texel, float depth) {
 
 // One texel of a silhouette quad, at tile coordinates f (its centre) and whole-map texel
 // `map_texel`: its exact signed distance from the projected edge's line (texels), the edge's
-// depth there, and the encoding of esm_common.glsl (edge, edge_depth) in `value`; false for
+// depth there, and the encoding of esm_common.glsl (edge, edge_depth, edge_near) in `value`; false for
 // texels it does not write. Nothing beyond the band. Beyond the edge's ends only the outer side
 // is written, with the distance to the nearer end, up to BAND_OUT: the outside of a convex
 // corner of the silhouette (which no quad's band reaches) then gets its exact distance, the
@@ -109,8 +109,8 @@ bool nearer_surface(ivec2 map_texel, float depth) {
 // occluder lies behind that plane, so its own surface is never nearer: what is, is another
 // object in front (a beam over the top of a pole hanging from it). Both by more than
 // u_hidden_tolerance texel footprints (the depth attachment carries the polygon offset).
-bool silhouette_texel(QuadEdge q, vec2 f, ivec2 map_texel, out vec2 value) {
-  value = vec2(0.0);
+bool silhouette_texel(QuadEdge q, vec2 f, ivec2 map_texel, out vec3 value) {
+  value = vec3(0.0);
   vec2 edge = q.end1 - q.end0;
   float len = length(edge);
   float s = dot(f - q.end0, edge) / (len * len);

@@ -28,6 +28,7 @@ layout(local_size_x = 32) in;
 #include "silhouette_edge.glsl"
 layout(r32ui, binding = 0) uniform uimage2D u_edge_bits;        // the edge channel's R32F storage
 layout(r32ui, binding = 1) uniform uimage2D u_edge_depth_bits;  // the edge depth's
+layout(r32ui, binding = 2) uniform uimage2D u_edge_near_bits;   // the nearest edge's
 layout(std430, binding = SILHOUETTE_CHUNKS_BINDING) buffer SilhouetteChunks {
   uint chunk_count;     // appended (may pass the capacity: those were written in place)
   uint groups_done;     // first-pass groups finished
@@ -92,10 +93,11 @@ void write_columns(QuadEdge q, QuadFrame f, int from, int to) {
     for (int b = b_first + row; b <= b_last; b += ROWS) {
       ivec2 t = f.swap ? ivec2(b, a) : ivec2(a, b);
       ivec2 map_texel = ivec2(u_tile_origin) + t;
-      vec2 value;
+      vec3 value;
       if (!silhouette_texel(q, vec2(t) + 0.5, map_texel, value)) continue;
       imageAtomicMax(u_edge_bits, map_texel, floatBitsToUint(value.x));
       imageAtomicMax(u_edge_depth_bits, map_texel, floatBitsToUint(max(value.y, 0.0)));
+      imageAtomicMax(u_edge_near_bits, map_texel, floatBitsToUint(value.z));
     }
   }
 }
