@@ -50,6 +50,9 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       if (!find.valid()) return *find.last_error();
       buffers_->find(find.program(), views->light);  // one light: one list for every face
     }
+    // The nearest edge is MAXed by image atomics whichever way the quads are written (an image
+    // slot: the graph plans its barriers).
+    ctx.bind_image_bits(2, "edge_near", GL_READ_WRITE);
     if (writing == Writing::compute) return write(ctx, *views);
     return draw(ctx, *views, writing);
   }
@@ -92,7 +95,6 @@ class SilhouetteQuadPass final : public exec::PassImpl {
     }
     ctx.bind_image_bits(0, "edge", GL_READ_WRITE);
     ctx.bind_image_bits(1, "edge_depth", GL_READ_WRITE);
-    ctx.bind_image_bits(2, "edge_near", GL_READ_WRITE);
     buffers_->bind_found();
     for (size_t i = 0; i < views.faces.size(); ++i) {
       set_face_uniforms(quads.program(), views, i);
@@ -123,7 +125,6 @@ class SilhouetteQuadPass final : public exec::PassImpl {
       if (Status s = fb_.finish(); !s) return s;
       attached_ = {edge.id(), edge_depth.id()};
     }
-    ctx.bind_image_bits(2, "edge_near", GL_READ_WRITE);  // an image slot: the graph plans its barriers
     const gl::Program& prog = p.program();
     set_quad_uniforms(ctx, prog, views);
     ctx.bind_sampled(p, "u_depth", "depth");
