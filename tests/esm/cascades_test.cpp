@@ -2,7 +2,9 @@
 // per cascade with that cascade's texel size, and the mask reads each receiver in the cascade the
 // other techniques read it in. On `avenue` under a point-sized sun, four 1024^2 cascades give a
 // smaller edge error against the exact hard shadow than one 2048^2 map (the same texels), as they
-// do for plain shadow mapping (`hard`).
+// do for plain shadow mapping (`hard`). Measured (llvmpipe), one map / four cascades: hard 0.0724 /
+// 0.0469, esm 0.0358 / 0.0328 (0.0485 / 0.0338 before esm's band was made linear: its sub-texel
+// edges gain less from smaller texels than the plain map's staircase does).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -37,7 +39,7 @@ TEST(EsmCascades, FourCascadesHaveASmallerEdgeErrorThanOneMap) {
     }
   std::printf("[ measure  ] edge error, one 2048^2 map / four 1024^2 cascades: hard %.4f / %.4f, esm %.4f / %.4f\n",
               error[0][0], error[0][1], error[1][0], error[1][1]);
-  EXPECT_LT(error[1][1], 0.8 * error[1][0]) << "esm: cascades nearer the exact edges";
+  EXPECT_LT(error[1][1], 0.95 * error[1][0]) << "esm: cascades nearer the exact edges";
   EXPECT_LT(error[0][1], 0.8 * error[0][0]) << "hard: cascades nearer the exact edges";
   EXPECT_LE(error[1][1], error[0][1]) << "esm no worse than plain shadow mapping with the same cascades";
 }

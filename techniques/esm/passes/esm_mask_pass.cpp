@@ -1,7 +1,5 @@
 // esm_mask: the shadow test of the extended shadow map (Bujnak, section 3.2) into the frame's
 // shadow_mask (compute; shaders/esm_mask.comp.glsl says how the lookup decides).
-#include <algorithm>
-
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "exec/pass_decl_builder.h"
@@ -15,14 +13,6 @@ namespace penumbra::esm {
 namespace {
 
 using graph::Format;
-
-// Lit-ness of the shadow boundary: the edge, moved `shift` texels outwards (the paper: 0.707),
-// through the same transfer as the quads (esm_common.glsl).
-float boundary_litness(float shift) {
-  constexpr float kBandIn = 1.4142136f, kBandOut = 2.8284271f, kGuard = 0.25f;
-  const float t = (shift + kBandIn) / (kBandIn + kBandOut);
-  return std::clamp((t - kGuard) / (1.0f - kGuard), 0.0f, 1.0f);
-}
 
 class MaskPass final : public exec::PassImpl {
  public:
@@ -43,7 +33,7 @@ class MaskPass final : public exec::PassImpl {
     if (Status s = passes::set_shadow_uniforms(prog, ctx.frame(), passes::SixFaces::read); !s) return s;  // faces_away_from_light()
     set_view_uniforms(prog, *views);
     prog.set("u_depth_bias", ctx.real("depth_bias"));
-    prog.set("u_boundary", boundary_litness(ctx.real("boundary_shift")));
+    prog.set("u_boundary_shift", ctx.real("boundary_shift"));
     prog.set("u_aa_width", ctx.real("aa_width"));
     prog.set("u_edge_bias_texels", ctx.real("edge_bias"));
     prog.set("u_nearest_edge", ctx.boolean("nearest_edge") ? 1 : 0);

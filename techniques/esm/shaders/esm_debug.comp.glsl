@@ -1,7 +1,7 @@
 #version 450 core
 // Debug views of the extended shadow map for the viewer: the edge-distance channel decoded to a
-// signed distance from the silhouette edge in texels (> 0 outside the occluder, between -0.35
-// (the guard zone) and 2.83; 0 where no quad wrote), and the silhouette mask (1 where one did).
+// signed distance from the silhouette edge in texels (> 0 outside the occluder, between -1.41
+// and 2.83; 0 where no quad wrote), and the silhouette mask (1 where one did).
 #include "screen_pass.glsl"
 #include "esm_common.glsl"
 layout(r32f, binding = 0) uniform writeonly image2D u_edge_distance;
@@ -13,9 +13,6 @@ void main() {
   if (any(greaterThanEqual(p, imageSize(u_edge_distance)))) return;
   vec4 t = esm_decode(vec2(texelFetch(u_edge, p, 0).r, 0.0));
   float mask = t.a > 0.5 ? 1.0 : 0.0;
-  // Inverse of edge_transfer(quad_coordinate(d)) above the guard zone.
-  float quad_t = (1.0 - t.r) * (1.0 - GUARD_T) + GUARD_T;
-  float d = quad_t * (BAND_IN + BAND_OUT) - BAND_IN;
-  imageStore(u_edge_distance, p, vec4(mask > 0.0 ? d : 0.0));
+  imageStore(u_edge_distance, p, vec4(t.g));
   imageStore(u_silhouette_mask, p, vec4(mask));
 }

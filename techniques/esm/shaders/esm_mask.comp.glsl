@@ -15,7 +15,7 @@
 //   a, and the nearest texel is not inside its edge -> 0: it is covered by an occluder other
 //       than that edge's own surface (another object whose edge crosses, Figures 9-11), which no
 //       edge may lighten (no lit holes where silhouettes cross);
-//   a texel of the footprint deep inside its edge (guard zone) with nothing in front of the
+//   a texel of the footprint deep inside its edge (DEEP_INSIDE) with nothing in front of the
 //       receiver -> a ? 0 : 1: the edge data contradicts the depth map, as it does where dense
 //       silhouettes overlap (thin objects, neighbours a few texels apart);
 //   otherwise -> the bilinear lit-ness decides, with a ramp one pixel wide on screen. A texel
@@ -36,7 +36,7 @@ uniform sampler2D u_edge;         // the extended map's three channels (esm_comm
 uniform sampler2D u_edge_depth;   // fetches, and a gather of the edge's marks
 uniform sampler2D u_edge_near;
 uniform float u_depth_bias;       // window depth units, subtracted from the receiver depth
-uniform float u_boundary;         // lit-ness of the shadow boundary (edge_transfer at the edge + shift)
+uniform float u_boundary_shift;   // boundary_shift: texels outwards from the edge
 uniform float u_aa_width;         // pixels; 0 = a binary edge
 uniform float u_edge_bias_texels; // edge_bias: texels of the receiver's own depth slope
 uniform bool u_nearest_edge;      // nearest_edge: read edge_near where the farthest edge is not in front
@@ -90,13 +90,16 @@ float litness(vec4 texel, float depth, float z) {
   return occluded && l >= edge_litness() ? 0.0 : l;
 }
 
-// The texel's quad puts it deep inside an occluder (the guard zone: lit-ness 0), yet the plain
-// test finds nothing in front of the receiver there. One edge cannot say that: it is the inner
-// band of an object thinner than the band, or of a neighbouring silhouette, lying over lit
-// ground (dense silhouettes, where MAX kept the most shadowed of several edges).
-bool contradicts(vec4 texel, float depth, float z) { return has_quad(texel) && texel.r >= 1.0 && z <= depth; }
+// The texel's quad puts it deep inside an occluder, yet the plain test finds nothing in front of
+// the receiver there. One edge cannot say that: it is the inner band of an object thinner than
+// the band, or of a neighbouring silhouette, lying over lit ground (dense silhouettes, where MAX
+// kept an inside over the outside of the edge that passes there).
+bool contradicts(vec4 texel, float depth, float z) {
+  return has_quad(texel) && 1.0 - texel.r <= deep_inside_litness() && z <= depth;
+}
 
 float visibility(ivec2 pixel, vec3 world, vec3 normal) {
+  float boundary = distance_litness(u_boundary_shift);
   // Cascades: the one the other techniques read this receiver in (none holds it: the last, whose
   // coordinate is then outside its tile, lit).
   int face = kCascades > 1 ? min(cascade_of(world), kCascades - 1) : esm_face(world);
@@ -153,16 +156,16 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   if (contradicts(t00, d00, z) || contradicts(t10, d10, z) || contradicts(t01, d01, z) || contradicts(t11, d11, z))
     return a ? 0.0 : 1.0;
   float l00 = litness(t00, d00, z), l10 = litness(t10, d10, z), l01 = litness(t01, d01, z), l11 = litness(t11, d11, z);
-  // All four texels inside the boundary: so is the receiver. (Inside, the lit-ness is flat in the
-  // guard zone, so the ramp below, extrapolated from the local gradient, would call receivers
-  // deep in the shadow partly lit. Outside, it is linear over the whole band.)
-  if (all(lessThan(vec4(l00, l10, l01, l11), vec4(u_boundary)))) return 0.0;
+  // All four texels inside the boundary: so is the receiver. (Texels deeper than the band read 0
+  // from the plain test, not the linear lit-ness, so the ramp below, extrapolated from the local
+  // gradient, could call receivers deep in the shadow partly lit. Outside, the band is wider.)
+  if (all(lessThan(vec4(l00, l10, l01, l11), vec4(boundary)))) return 0.0;
   float l = mix(mix(l00, l10, f.x), mix(l01, l11, f.x), f.y);
   vec2 g = vec2(mix(l10 - l00, l11 - l01, f.y), mix(l01 - l00, l11 - l10, f.x));
-  if (u_aa_width <= 0.0) return l >= u_boundary ? 1.0 : 0.0;
+  if (u_aa_width <= 0.0) return l >= boundary ? 1.0 : 0.0;
   // The ramp is u_aa_width pixels wide on screen: the edge's coverage of the pixel.
   float per_pixel = length(vec2(dot(g, cx.xy), dot(g, cy.xy)));  // |d lit-ness / d pixel|
-  float distance_px = (l - u_boundary) / max(per_pixel, 1e-6);
+  float distance_px = (l - boundary) / max(per_pixel, 1e-6);
   return clamp(0.5 + distance_px / u_aa_width, 0.0, 1.0);
 }
 

@@ -99,7 +99,7 @@ bool nearer_surface(ivec2 map_texel, float depth) {
 // is written, with the distance to the nearer end, up to BAND_OUT: the outside of a convex
 // corner of the silhouette (which no quad's band reaches) then gets its exact distance, the
 // corner's, while the inside of the shape near a reflex corner, which such a cap would call
-// outside, keeps the adjacent edge's inside value (MAX keeps the most shadowed) or is left to
+// outside, keeps the adjacent edge's inside value (MAX keeps an inside over an outside) or is left to
 // the plain depth test. Silhouettes of small triangles (a tessellated sphere seen from a grazing
 // light) zigzag in sub-texel steps: without the caps, the outer band would be full of holes.
 //
@@ -129,6 +129,6 @@ bool silhouette_texel(QuadEdge q, vec2 f, ivec2 map_texel, out vec3 value) {
     float own = dot(q.front_depth.xy, f) + q.front_depth.z;
     if (own >= 0.0 && own <= 1.0 && nearer_surface(map_texel, own)) return false;
   }
-  value = esm_encode_quad(1.0 - edge_transfer(quad_coordinate(d)), edge_depth);
+  value = esm_encode_quad(d, edge_depth);
   return true;
 }

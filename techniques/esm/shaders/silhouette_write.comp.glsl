@@ -10,7 +10,7 @@
 // The quad is a rectangle in the tile's texel space: across the edge from -BAND_IN to BAND_OUT,
 // along it from BAND_OUT before its first end to BAND_OUT past its second (the caps). A work
 // group walks it column by column along the edge's major axis, where a column crosses the band
-// over at most (BAND_IN + BAND_OUT + 2 QUAD_MARGIN) sqrt 2 = 6.1 texels: 7 texel centres, so
+// over at most (BAND_IN + BAND_OUT + 2 QUAD_MARGIN) sqrt 2 = 5.6 texels: 6 texel centres, so
 // eight threads a column and four columns at a time (a chunk).
 //
 // Two dispatches, because quads differ a thousandfold in length (a sub-texel edge of a detailed
