@@ -5,8 +5,8 @@
 // pass over every quad of every mesh instance, and only they drawn; or found, then written texel
 // by texel by a compute pass with image atomics, without the raster.
 // blend = max: MAX blending (or atomic MAX), so where quads overlap the map keeps the farthest
-// edge depth and the most shadowed edge value (the paper's "maximal depth, minimal distance"), and
-// the nearest edge with its own value (esm_common.glsl; by image atomics on either path);
+// edge depth and the edge key's choice (an inside over an outside, the nearest edge on either
+// side), and the nearest edge in depth with its own value (esm_common.glsl; by image atomics on either path);
 // the depth pass's neutral defaults make one pass enough. blend = overwrite: no blending, edge
 // and edge depth replaced by whichever quad comes last (the nearest edge still by atomic MAX):
 // the first pass of the paper's two-pass fallback, for hardware without that blend mode,
