@@ -37,6 +37,7 @@ class MaskPass final : public exec::PassImpl {
     prog.set("u_aa_width", ctx.real("aa_width"));
     prog.set("u_edge_bias_texels", ctx.real("edge_bias"));
     prog.set("u_nearest_edge", ctx.boolean("nearest_edge") ? 1 : 0);
+    prog.set("u_edge_lines", ctx.boolean("edge_lines") ? 1 : 0);
     prog.set("u_inv_view_proj", glm::inverse(ctx.frame().projection() * ctx.frame().view()));
     gl::Texture& mask = ctx.texture("mask");
     prog.set("u_screen", glm::vec2(mask.width(), mask.height()));
@@ -52,7 +53,7 @@ class MaskPass final : public exec::PassImpl {
 
 exec::PassType mask_pass_type() {
   return passes::shadow_receiver_pass(
-             "esm_mask", "Extended shadow map test: point-filtered depth and edge depths, bilinear edge distance (compute)")
+             "esm_mask", "Extended shadow map test: point-filtered depth and edge depths, the edge distance from the texels' edge lines (compute)")
       .sampled("edge", {Format::R32F})
       .sampled("edge_depth", {Format::R32F})
       .sampled("edge_near", {Format::R32F})
@@ -69,6 +70,9 @@ exec::PassType mask_pass_type() {
       .boolean("nearest_edge", true,
                "A receiver not behind a texel's farthest edge (its own, at a contact) but behind its nearest one uses that "
                "edge alone; false: the plain test there, as before the map kept the nearest edge")
+      .boolean("edge_lines", true,
+               "The receiver's distance from the silhouette from the footprint texels' edges as lines (the nearest texel's, "
+               "combined at corners); false: bilinear interpolation of the texels' distances (the paper)")
       .build<MaskPass>();
 }
 

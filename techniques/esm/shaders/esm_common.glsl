@@ -14,13 +14,15 @@
 //
 // The map is three R32F textures, 4 bytes a texel each (an RG32F pair until the silhouettes could be
 // written by compute: image atomics take single 32-bit channels):
-//   edge        QUAD_MARK + the key of the texel's signed distance from its edge (quad_key) where a
+//   edge        QUAD_MARK + the key of the texel's signed distance from its edge (quad_key) and,
+//               below the key's last step, the edge's outward direction (esm_encode_edge) where a
 //               quad wrote; below QUAD_MARK where none did (the depth pass's "no edge" value). The
 //               key orders overlapping quads for MAX (section 4.1): inside an occluder beats
 //               outside (the shadows of several casters are their union), and on either side the
 //               edge nearest the texel wins. The mark is the silhouette mask: every key lies above
 //               every "no edge" value, so MAX keeps it, and one gather says whether a footprint
-//               has quads.
+//               has quads. Distance and direction are the texel's edge as a line, which the shadow
+//               test evaluates at the receiver (esm_mask.comp.glsl, "edge lines").
 //   edge_depth  window depth of the silhouette edge at this texel (MAX: the farthest edge)
 //   edge_near   the nearest edge at this texel in depth, its depth and lit-ness together
 //               (esm_encode_near): 0 where no quad wrote. Where silhouettes of two surfaces meet
@@ -59,10 +61,39 @@ float deep_inside_litness() { return distance_litness(DEEP_INSIDE); }
 float quad_key(float d) { return d > 0.0 ? 1.0 - d / BAND_OUT : 2.0 + max(d, -BAND_IN) / BAND_IN; }
 float key_distance(float key) { return key < 1.0 ? (1.0 - key) * BAND_OUT : (key - 2.0) * BAND_IN; }
 
+// The edge channel's value where a quad wrote: QUAD_MARK + the key in 2^-14 steps, and the edge's
+// outward direction (from the edge towards the texel beyond its ends) in 256 steps as the 8 bits
+// below them. Between 2 and 4 a float's last bit is 2^-22, so the sum is exact, MAX still orders
+// by the key first, and the direction always belongs to the edge whose key won. Steps of 2^-14
+// are 1.7e-4 texels of distance outside, 6e-5 inside. The direction is its "diamond angle" (the
+// position on the unit diamond |x| + |y| = 1, 0 to 4 counterclockwise from +x): no trigonometry
+// in the writers or the shadow test, steps of 0.9 to 1.8 degrees, which move a line at most 0.03
+// texels a texel away.
+const float KEY_STEPS = 16384.0;
+const float DIRECTION_STEPS = 256.0;
+const float EDGE_STEP = 1.0 / (KEY_STEPS * DIRECTION_STEPS);  // the last bit of a float in [2, 4)
+float diamond_angle(vec2 v) {
+  float s = v.y / (abs(v.x) + abs(v.y));
+  return v.x < 0.0 ? 2.0 - s : (v.y < 0.0 ? 4.0 + s : s);
+}
+vec2 diamond_direction(float p) {
+  return normalize(vec2(p < 2.0 ? 1.0 - p : p - 3.0, p < 1.0 ? p : (p < 3.0 ? 2.0 - p : p - 4.0)));
+}
+float esm_encode_edge(float key, vec2 outward) {
+  float key_steps = min(floor(key * KEY_STEPS), 2.0 * KEY_STEPS - 1.0);  // below 4: one exponent
+  float direction = mod(floor(diamond_angle(outward) * (DIRECTION_STEPS / 4.0) + 0.5), DIRECTION_STEPS);
+  return QUAD_MARK + (key_steps * DIRECTION_STEPS + direction) * EDGE_STEP;
+}
+float esm_edge_key(float stored) { return floor((stored - QUAD_MARK) / EDGE_STEP / DIRECTION_STEPS) / KEY_STEPS; }
+vec2 esm_edge_outward(float stored) {
+  float steps = (stored - QUAD_MARK) / EDGE_STEP;
+  return diamond_direction((steps - floor(steps / DIRECTION_STEPS) * DIRECTION_STEPS) * (4.0 / DIRECTION_STEPS));
+}
+
 // A map texel as (1 - lit-ness, signed distance, edge depth, mask), from its stored (edge, edge_depth).
 vec4 esm_decode(vec2 stored) {
   if (stored.x < QUAD_MARK) return vec4(stored.x, 0.0, stored.y, 0.0);
-  float d = key_distance(stored.x - QUAD_MARK);
+  float d = key_distance(esm_edge_key(stored.x));
   return vec4(1.0 - distance_litness(d), d, stored.y, 1.0);
 }
 
@@ -82,7 +113,8 @@ vec4 esm_decode_near(float stored) {
   return vec4((stored - steps) * (256.0 / 255.0), 0.0, (NEAR_STEPS - steps) / (NEAR_STEPS - 1.0), 1.0);
 }
 
-// What a quad writes at `d` texels from its edge: (edge, edge_depth, edge_near).
-vec3 esm_encode_quad(float d, float edge_depth) {
-  return vec3(QUAD_MARK + quad_key(d), edge_depth, esm_encode_near(1.0 - distance_litness(d), edge_depth));
+// What a quad writes at `d` texels from its edge, `outward` its unit direction there: (edge,
+// edge_depth, edge_near).
+vec3 esm_encode_quad(float d, vec2 outward, float edge_depth) {
+  return vec3(esm_encode_edge(quad_key(d), outward), edge_depth, esm_encode_near(1.0 - distance_litness(d), edge_depth));
 }

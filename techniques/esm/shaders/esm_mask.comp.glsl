@@ -2,8 +2,8 @@
 #include "gbuffer/gbuffer_read.glsl"
 // The extended shadow map's shadow test (Bujnak, section 3.2), one receiver pixel per thread:
 // the map depth and the edge depth are compared point-filtered at the nearest texel, the edge
-// distance is interpolated bilinearly over the 2x2 texels around the receiver, and the result
-// is an anti-aliased hard shadow (1 = lit, 0 = umbra).
+// distance comes from the 2x2 texels around the receiver (their edges as lines, or the paper's
+// bilinear interpolation), and the result is an anti-aliased hard shadow (1 = lit, 0 = umbra).
 //
 // The paper's lookup on (depth flag, edge flag, distance) is a table; with float targets and a
 // compute shader it becomes:
@@ -16,11 +16,14 @@
 //       than that edge's own surface (another object whose edge crosses, Figures 9-11), which no
 //       edge may lighten (no lit holes where silhouettes cross);
 //   a texel of the footprint deep inside its edge (DEEP_INSIDE) with nothing in front of the
-//       receiver -> a ? 0 : 1: the edge data contradicts the depth map, as it does where dense
-//       silhouettes overlap (thin objects, neighbours a few texels apart);
-//   otherwise -> the bilinear lit-ness decides, with a ramp one pixel wide on screen. A texel
-//       contributes its quad's lit-ness (0 when it lies outside its edge and is occluded in front
-//       of the receiver: the same rule per texel), or its plain depth test's 0 or 1 without one.
+//       receiver: the edge data contradicts the depth map, as it does where dense silhouettes
+//       overlap (thin objects, neighbours a few texels apart): that texel gives no edge line, and
+//       without one from another texel (or with edge_lines off) -> a ? 0 : 1;
+//   otherwise -> the receiver's distance from the texels' edge lines decides (edge_line_distance),
+//       with a ramp one pixel wide on screen; with edge_lines off, or where no texel gives a line,
+//       the bilinear lit-ness: a texel contributes its quad's lit-ness (0 when it lies outside its
+//       edge and is occluded in front of the receiver: the same rule per texel), or its plain
+//       depth test's 0 or 1 without one.
 // The paper shifts the boundary 0.707 texels outwards so that its 8-bit lookup could always
 // trust a; with the rule above the true edge is kept (boundary_shift = 0), the paper's shift is
 // a parameter.
@@ -40,6 +43,7 @@ uniform float u_boundary_shift;   // boundary_shift: texels outwards from the ed
 uniform float u_aa_width;         // pixels; 0 = a binary edge
 uniform float u_edge_bias_texels; // edge_bias: texels of the receiver's own depth slope
 uniform bool u_nearest_edge;      // nearest_edge: read edge_near where the farthest edge is not in front
+uniform bool u_edge_lines;        // edge_lines: the texels' edges as lines at the receiver (else bilinear)
 uniform mat4 u_inv_view_proj;     // camera clip -> world
 uniform vec2 u_screen;            // pixels
 
@@ -62,6 +66,8 @@ float receiver_slope(vec3 cx, vec3 cy) {
   return length(dz);
 }
 
+// map_texel's mask (.a): a quad's texel, or its nearest edge alone (depth and lit-ness, no distance).
+const float QUAD_TEXEL = 1.0, NEAREST_EDGE_ONLY = 2.0;
 bool has_quad(vec4 texel) { return texel.a > 0.5; }
 
 // The receiver (depth z) is behind the texel's edge by more than `edge_bias`.
@@ -77,7 +83,8 @@ vec4 map_texel(ivec2 p, float z, float edge_bias) {
   vec4 all_quads = esm_decode(vec2(texelFetch(u_edge, p, 0).r, texelFetch(u_edge_depth, p, 0).r));
   if (!u_nearest_edge || !has_quad(all_quads) || behind_edge(all_quads, z, edge_bias)) return all_quads;
   vec4 nearest_edge = esm_decode_near(texelFetch(u_edge_near, p, 0).r);
-  return has_quad(nearest_edge) && behind_edge(nearest_edge, z, edge_bias) ? nearest_edge : all_quads;
+  return has_quad(nearest_edge) && behind_edge(nearest_edge, z, edge_bias) ? vec4(nearest_edge.rgb, NEAREST_EDGE_ONLY)
+                                                                         : all_quads;
 }
 
 // Lit-ness of a texel for a receiver at depth z behind all the footprint's edges: a quad's, unless
@@ -96,6 +103,72 @@ float litness(vec4 texel, float depth, float z) {
 // kept an inside over the outside of the edge that passes there).
 bool contradicts(vec4 texel, float depth, float z) {
   return has_quad(texel) && 1.0 - texel.r <= deep_inside_litness() && z <= depth;
+}
+
+// Edge lines (edge_lines): each texel holds its edge as a line (its signed distance and outward
+// direction, esm_common.glsl), and the receiver's signed distance from the silhouette is taken
+// from the lines at the receiver instead of interpolating the texels' distances. Bilinear
+// interpolation is exact for one straight edge across the footprint; where the footprint's texels
+// hold different edges (corners, the sub-texel steps of a tessellated curve, bars and neighbours a
+// few texels apart) it blends distances to different lines and bends the boundary. The receiver's
+// nearest texel's line decides (else the line nearest the receiver), combined with each other
+// texel's differing line as a corner: where each line's point nearest its texel lies inside the
+// other line, a convex corner (the intersection of the two insides: the larger distance), else the
+// union (the smaller), which keeps crossing shadows and reflex corners filled (a corner left to the
+// first line alone lit holes where pipes cross: crossed_pipes_test.cpp). Edge error at 512^2,
+// 1080p, H200, with the contradiction rule below: poles 0.0175 -> 0.0074, showcase 0.0352 ->
+// 0.0221, FlightHelmet 0.0630 -> 0.0549, 0.42-1.00x on 11 scenes (docs/results/esm.md, "edge lines").
+// Written with four structs and no arrays: indexing arrays of the footprint's texels cost the whole
+// mask 0.007-0.013 ms of occupancy on an H200, lines or not (same section).
+// A texel's edge line, `centre` its offset in the footprint (texels), at the receiver f.
+struct EdgeLine {
+  bool valid;
+  float distance;  // at the texel's centre (texels, > 0 outside)
+  vec2 outward;
+  vec2 centre;
+  float at;        // at the receiver
+};
+
+EdgeLine edge_line(vec4 texel, bool valid, ivec2 map_texel, vec2 centre, vec2 f) {
+  EdgeLine e;
+  e.valid = valid;
+  e.distance = texel.g;
+  e.outward = valid ? esm_edge_outward(texelFetch(u_edge, map_texel, 0).r) : vec2(0.0);
+  e.centre = centre;
+  e.at = e.distance + dot(f - centre, e.outward);
+  return e;
+}
+
+// The line nearer the receiver (the first on a tie), of those that are valid.
+EdgeLine nearer(EdgeLine a, EdgeLine b) { return !a.valid || (b.valid && abs(b.at) < abs(a.at)) ? b : a; }
+
+// `line`, combined with the decided line `first` as a corner (above) into d.
+void corner(EdgeLine first, EdgeLine line, inout float d, inout vec2 d_outward) {
+  // The same line (a straight edge across the footprint, or first itself), to well within the ramp of a pixel.
+  if (!line.valid || abs(line.at - first.at) <= 0.02) return;
+  vec2 foot = first.centre - first.distance * first.outward;  // the line's point nearest its texel
+  vec2 line_foot = line.centre - line.distance * line.outward;
+  bool convex = line.distance + dot(foot - line.centre, line.outward) < 0.0 &&
+                first.distance + dot(line_foot - first.centre, first.outward) < 0.0;
+  if (convex ? line.at > d : line.at < d) {
+    d = line.at;
+    d_outward = line.outward;
+  }
+}
+
+// The receiver's signed distance from the silhouette and its direction from the footprint's lines;
+// false when no texel gives one. The nearest texel is the one of f's quadrant.
+bool edge_line_distance(EdgeLine e00, EdgeLine e10, EdgeLine e01, EdgeLine e11, vec2 f, out float d, out vec2 d_outward) {
+  EdgeLine first = f.y >= 0.5 ? (f.x >= 0.5 ? e11 : e01) : (f.x >= 0.5 ? e10 : e00);
+  if (!first.valid) first = nearer(nearer(e00, e10), nearer(e01, e11));
+  if (!first.valid) return false;
+  d = first.at;
+  d_outward = first.outward;
+  corner(first, e00, d, d_outward);
+  corner(first, e10, d, d_outward);
+  corner(first, e01, d, d_outward);
+  corner(first, e11, d, d_outward);
+  return true;
 }
 
 float visibility(ivec2 pixel, vec3 world, vec3 normal) {
@@ -146,20 +219,44 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   // Occluded at the nearest texel: only its own edge's inside may lighten it (sub-texel).
   bool own_edge = has_quad(tn) && 1.0 - tn.r < edge_litness();
   if (a && !own_edge) return 0.0;
-  // Bilinear lit-ness and its gradient (per texel).
   // Edge data that contradicts the depth map anywhere in the footprint: the plain answer, so esm is
   // never worse than the map it extends. Measured edge error on showcase's pickets (llvmpipe,
   // 384x288, tests/esm/edge_error_test.cpp), esm / plain: 256^2 0.0871 / 0.0858 before, 0.0755
   // with this rule; 512^2 0.0355 / 0.0502 before, 0.0373. Per texel instead (the texel's plain
-  // 0 or 1 in the interpolation) gave 0.0763 and 0.0422.
-  if (contradicts(t00, d00, z) || contradicts(t10, d10, z) || contradicts(t01, d01, z) || contradicts(t11, d11, z))
-    return a ? 0.0 : 1.0;
+  // 0 or 1 in the interpolation) gave 0.0763 and 0.0422. With edge lines a contradicting texel
+  // gives no line, and the plain answer is kept for footprints where no texel gives one: edge
+  // error at 512^2, 1080p, llvmpipe 0.89 (Fox) to 1.00x the whole-footprint rule's, showcase at
+  // 256^2 0.132 -> 0.100 (docs/results/esm.md, "edge lines").
+  bvec4 contradiction = bvec4(contradicts(t00, d00, z), contradicts(t10, d10, z), contradicts(t01, d01, z),
+                              contradicts(t11, d11, z));
+  bool contradicted = any(contradiction);
+  if (contradicted && !u_edge_lines) return a ? 0.0 : 1.0;
   float l00 = litness(t00, d00, z), l10 = litness(t10, d10, z), l01 = litness(t01, d01, z), l11 = litness(t11, d11, z);
   float boundary = distance_litness(u_boundary_shift);
   // All four texels inside the boundary: so is the receiver. (Texels deeper than the band read 0
   // from the plain test, not the linear lit-ness, so the ramp below, extrapolated from the local
   // gradient, could call receivers deep in the shadow partly lit. Outside, the band is wider.)
   if (all(lessThan(vec4(l00, l10, l01, l11), vec4(boundary)))) return 0.0;
+  if (u_edge_lines) {
+    // A texel gives its line when it is a quad's own texel whose lit-ness the rules above kept.
+    EdgeLine e00 = edge_line(t00, t00.a == QUAD_TEXEL && !(z > d00 && l00 >= edge_litness()) && !contradiction.x, i0,
+                             vec2(0.0, 0.0), f);
+    EdgeLine e10 = edge_line(t10, t10.a == QUAD_TEXEL && !(z > d10 && l10 >= edge_litness()) && !contradiction.y,
+                             i0 + ivec2(1, 0), vec2(1.0, 0.0), f);
+    EdgeLine e01 = edge_line(t01, t01.a == QUAD_TEXEL && !(z > d01 && l01 >= edge_litness()) && !contradiction.z,
+                             i0 + ivec2(0, 1), vec2(0.0, 1.0), f);
+    EdgeLine e11 = edge_line(t11, t11.a == QUAD_TEXEL && !(z > d11 && l11 >= edge_litness()) && !contradiction.w,
+                             i0 + ivec2(1, 1), vec2(1.0, 1.0), f);
+    float d;
+    vec2 d_outward;
+    if (edge_line_distance(e00, e10, e01, e11, f, d, d_outward)) {
+      if (u_aa_width <= 0.0) return d >= u_boundary_shift ? 1.0 : 0.0;
+      float per_pixel = length(vec2(dot(d_outward, cx.xy), dot(d_outward, cy.xy)));  // |d distance / d pixel|
+      return clamp(0.5 + (d - u_boundary_shift) / max(per_pixel, 1e-6) / u_aa_width, 0.0, 1.0);
+    }
+    if (contradicted) return a ? 0.0 : 1.0;
+  }
+  // Bilinear lit-ness and its gradient (per texel).
   float l = mix(mix(l00, l10, f.x), mix(l01, l11, f.x), f.y);
   vec2 g = vec2(mix(l10 - l00, l11 - l01, f.y), mix(l01 - l00, l11 - l10, f.x));
   if (u_aa_width <= 0.0) return l >= boundary ? 1.0 : 0.0;

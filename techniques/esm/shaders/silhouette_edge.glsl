@@ -93,14 +93,15 @@ bool nearer_surface(ivec2 map_texel, float depth) {
 }
 
 // One texel of a silhouette quad, at tile coordinates f (its centre) and whole-map texel
-// `map_texel`: its exact signed distance from the projected edge's line (texels), the edge's
-// depth there, and the encoding of esm_common.glsl (edge, edge_depth, edge_near) in `value`; false for
-// texels it does not write. Nothing beyond the band. Beyond the edge's ends only the outer side
-// is written, with the distance to the nearer end, up to BAND_OUT: the outside of a convex
-// corner of the silhouette (which no quad's band reaches) then gets its exact distance, the
-// corner's, while the inside of the shape near a reflex corner, which such a cap would call
-// outside, keeps the adjacent edge's inside value (MAX keeps an inside over an outside) or is left to
-// the plain depth test. Silhouettes of small triangles (a tessellated sphere seen from a grazing
+// `map_texel`: its exact signed distance from the projected edge's line (texels) and the line's
+// outward direction, the edge's depth there, and the encoding of esm_common.glsl (edge,
+// edge_depth, edge_near) in `value`; false for texels it does not write. Nothing beyond the band.
+// Beyond the edge's ends only the outer side is written, with the distance to the nearer end (and
+// the direction from it), up to BAND_OUT: the outside of a convex corner of the silhouette (which
+// no quad's band reaches) then gets its exact distance, the corner's, while the inside of the
+// shape near a reflex corner, which such a cap would call outside, keeps the adjacent edge's
+// inside value (MAX keeps an inside over an outside) or is left to the plain depth test.
+// Silhouettes of small triangles (a tessellated sphere seen from a grazing
 // light) zigzag in sub-texel steps: without the caps, the outer band would be full of holes.
 //
 // Hidden edges write nothing (section 3.1: "hidden silhouette edges should not be rendered"):
@@ -117,10 +118,13 @@ bool silhouette_texel(QuadEdge q, vec2 f, ivec2 map_texel, out vec3 value) {
   float d = dot(f - q.end0, q.outward);  // texels, > 0 outside the occluder
   if (d > BAND_OUT || d < -BAND_IN) return false;
   float beyond = max(-s, s - 1.0) * len;  // texels past the nearer end, <= 0 along the edge
+  vec2 outward = q.outward;
   if (beyond > 1e-3) {
     if (d < 0.0) return false;
-    d = length(f - (s < 0.0 ? q.end0 : q.end1));
+    vec2 from_end = f - (s < 0.0 ? q.end0 : q.end1);
+    d = length(from_end);
     if (d > BAND_OUT) return false;
+    outward = from_end / d;  // the cap's tangent line at the texel
   }
   float edge_depth = mix(q.depth.x, q.depth.y, clamp(s, 0.0, 1.0));  // affine along a projected line
   if (d >= 0.0) {
@@ -129,6 +133,6 @@ bool silhouette_texel(QuadEdge q, vec2 f, ivec2 map_texel, out vec3 value) {
     float own = dot(q.front_depth.xy, f) + q.front_depth.z;
     if (own >= 0.0 && own <= 1.0 && nearer_surface(map_texel, own)) return false;
   }
-  value = esm_encode_quad(d, edge_depth);
+  value = esm_encode_quad(d, outward, edge_depth);
   return true;
 }
