@@ -5,6 +5,8 @@
 
 namespace penumbra {
 
+std::string partial_path(const std::string& path) { return path + ".partial"; }
+
 Status move_into_place(const std::string& tmp, const std::string& path) {
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
@@ -30,7 +32,7 @@ Status check_output_path(const std::string& path) {
 
 Status write_file_whole(const std::string& path, const std::string& text) {
   if (Status s = check_output_path(path); !s) return s;
-  const std::string tmp = path + ".partial";
+  const std::string tmp = partial_path(path);
   {
     std::ofstream f(tmp, std::ios::binary);
     f << text;

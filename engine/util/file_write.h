@@ -1,5 +1,5 @@
 #pragma once
-// Writes a whole file or nothing: the text goes to PATH.partial, which is renamed over PATH
+// Writes a whole file or nothing: the text goes to partial_path(PATH), which is renamed over PATH
 // only when every byte was written, so a reader never sees half a report.
 #include <string>
 
@@ -8,6 +8,9 @@
 namespace penumbra {
 
 Status write_file_whole(const std::string& path, const std::string& text);
+
+// The name a file is written under before it is moved into place (every writer's temporary).
+std::string partial_path(const std::string& path);
 
 // Whether `path` can be an output file, in words that say what is wrong: "is a directory, not a
 // file", "its folder DIR does not exist", "DIR is not a directory". Every writer calls it first.

@@ -1,7 +1,10 @@
 #include "util/interrupted_outputs.h"
 
 #include <signal.h>
+#include <time.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <array>
 #include <atomic>
@@ -23,16 +26,32 @@ constexpr int kSlots = 16384;
 std::array<Entry, kSlots> table;
 std::atomic<int> high_water{0};  // slots in use are all below this
 
-void remove_all() {
+// One pass: files first, then folders, innermost (latest) first; rmdir keeps non-empty ones.
+// True when no registered folder is left.
+bool remove_pass() {
   const int n = high_water.load(std::memory_order_acquire);
-  for (int i = 0; i < n; ++i)  // files first
+  for (int i = 0; i < n; ++i)
     if (char* p = table[static_cast<size_t>(i)].path.load(std::memory_order_acquire);
         p && !table[static_cast<size_t>(i)].directory.load(std::memory_order_acquire))
       unlink(p);
-  for (int i = n - 1; i >= 0; --i)  // then folders, innermost (latest) first; rmdir keeps non-empty ones
+  bool all_gone = true;
+  for (int i = n - 1; i >= 0; --i)
     if (char* p = table[static_cast<size_t>(i)].path.load(std::memory_order_acquire);
         p && table[static_cast<size_t>(i)].directory.load(std::memory_order_acquire))
-      rmdir(p);
+      if (rmdir(p) != 0 && errno != ENOENT) all_gone = false;
+  return all_gone;
+}
+
+// A stop signal may be handled on any thread (the GL driver's own workers too), and the others
+// run on meanwhile: the thread writing an output can create or rename a file between a pass's
+// unlink and rmdir (`render --all-techniques` stopped in CI once left its folder behind). So a
+// folder still there (not empty) gets more passes, 2 ms apart, for at most 50 ms; one holding
+// files that are not ours stays.
+void remove_all() {
+  for (int pass = 0; pass < 25 && !remove_pass(); ++pass) {
+    const timespec wait{0, 2000000};
+    nanosleep(&wait, nullptr);
+  }
 }
 
 extern "C" void on_stop_signal(int sig) {

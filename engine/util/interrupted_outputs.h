@@ -3,7 +3,8 @@
 // process is stopped by SIGINT, SIGTERM or SIGHUP (Ctrl+C, `kill`, a closed terminal), so an
 // interrupted run leaves nothing half-written either. The handler is installed on first use,
 // only for signals still at their default action (a host's own handlers are left alone); it
-// unlinks what is registered, then ends the process with the same signal.
+// unlinks what is registered (again while a registered folder is not yet empty, for up to 50 ms:
+// other threads run on while it does), then ends the process with the same signal.
 #include <string>
 
 namespace penumbra::interrupted_outputs {

@@ -53,6 +53,8 @@ Result<std::string> OutputBatch::staged(const std::string& path) {
   std::string tmp = path + ".pending";
   staged_.emplace_back(tmp, path);
   interrupted_handles_.push_back(interrupted_outputs::remember_file(tmp));
+  // A stop while the temporary is being written leaves the writer's own temporary (file_write.h).
+  interrupted_handles_.push_back(interrupted_outputs::remember_file(partial_path(tmp)));
   return tmp;
 }
 
@@ -92,7 +94,7 @@ Error OutputBatch::not_written(Error e) const {
 
 void OutputBatch::discard() {
   std::error_code ec;
-  for (const auto& [tmp, path] : staged_) fs::remove(tmp, ec);
+  for (const auto& [tmp, path] : staged_) fs::remove(tmp, ec), fs::remove(partial_path(tmp), ec);
   staged_.clear();
   for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it)
     if (fs::is_empty(*it, ec)) fs::remove(*it, ec);  // innermost first; a folder holding user files stays

@@ -13,7 +13,7 @@ namespace penumbra {
 Status write_png(const std::string& path, int width, int height, int channels, const unsigned char* data) {
   if (Status s = check_output_path(path); !s) return s;
   // Write to a temporary name and rename, so a reader never sees a half-written PNG.
-  std::string tmp = path + ".partial";
+  std::string tmp = partial_path(path);
   if (width <= 0 || height <= 0 || !stbi_write_png(tmp.c_str(), width, height, channels, data, width * channels)) {
     std::error_code ec;
     std::filesystem::remove(tmp, ec);

@@ -2,6 +2,10 @@
 // neither its temporaries nor the folders it created, and never touches what was there before.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -96,6 +100,31 @@ TEST(OutputBatch, AFileWhereTheFolderBelongsIsNamed) {
   ASSERT_FALSE(s);
   EXPECT_EQ(s.error().message, "is not a directory");
   fs::remove_all(dir);
+}
+
+// A run stopped while an output is being written: the writer's own temporary (partial_path) exists
+// and the staged name does not yet. The stop signal removes both, the finished outputs' staged
+// files and the folder (util/interrupted_outputs.h); the process ends by the signal itself. In a
+// child process, which the signal ends.
+TEST(OutputBatch, AStopWhileAnOutputIsBeingWrittenLeavesNothing) {
+  const fs::path dir = test::fresh_temp_dir("batch_stopped") / "out";
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    OutputBatch batch;
+    if (!batch.create_directory(dir.string())) _exit(3);
+    Result<std::string> done = batch.staged((dir / "a.png").string());
+    Result<std::string> writing = batch.staged((dir / "b.png").string());
+    if (!done || !writing || !write_file_whole(*done, "a")) _exit(4);
+    std::ofstream(partial_path(*writing)) << "half of b";
+    raise(SIGTERM);
+    _exit(5);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the child exited with " << WEXITSTATUS(status);
+  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  EXPECT_FALSE(fs::exists(dir)) << "left behind: " << (fs::exists(dir) ? entries(dir) : 0) << " entries in " << dir;
 }
 
 }  // namespace
