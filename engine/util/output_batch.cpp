@@ -94,7 +94,10 @@ Error OutputBatch::not_written(Error e) const {
 
 void OutputBatch::discard() {
   std::error_code ec;
-  for (const auto& [tmp, path] : staged_) fs::remove(tmp, ec), fs::remove(partial_path(tmp), ec);
+  for (const auto& [tmp, path] : staged_) {
+    fs::remove(tmp, ec);
+    fs::remove(partial_path(tmp), ec);
+  }
   staged_.clear();
   for (auto it = created_dirs_.rbegin(); it != created_dirs_.rend(); ++it)
     if (fs::is_empty(*it, ec)) fs::remove(*it, ec);  // innermost first; a folder holding user files stays

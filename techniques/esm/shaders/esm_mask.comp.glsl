@@ -79,8 +79,10 @@ bool behind_edge(vec4 texel, float z, float edge_bias) { return z > texel.b + ed
 // edge, and the receiver, behind none, gets the plain test (rule b below). The nearest edge took
 // esm's edge error at 512^2, 1080p, H200 from 0.0199 to 0.0146 on colonnade and 0.0416 to 0.0327
 // on Fox, 0.74-1.01x on 11 scenes (docs/results/esm.md, 2026-11-29).
-vec4 map_texel(ivec2 p, float z, float edge_bias) {
-  vec4 all_quads = esm_decode(vec2(texelFetch(u_edge, p, 0).r, texelFetch(u_edge_depth, p, 0).r));
+// `edge` is the texel's stored edge value, whose direction the edge lines read.
+vec4 map_texel(ivec2 p, float z, float edge_bias, out float edge) {
+  edge = texelFetch(u_edge, p, 0).r;
+  vec4 all_quads = esm_decode(vec2(edge, texelFetch(u_edge_depth, p, 0).r));
   if (!u_nearest_edge || !has_quad(all_quads) || behind_edge(all_quads, z, edge_bias)) return all_quads;
   vec4 nearest_edge = esm_decode_near(texelFetch(u_edge_near, p, 0).r);
   return has_quad(nearest_edge) && behind_edge(nearest_edge, z, edge_bias) ? vec4(nearest_edge.rgb, NEAREST_EDGE_ONLY)
@@ -129,11 +131,11 @@ struct EdgeLine {
   float at;        // at the receiver
 };
 
-EdgeLine edge_line(vec4 texel, bool valid, ivec2 map_texel, vec2 centre, vec2 f) {
+EdgeLine edge_line(vec4 texel, float edge, bool valid, vec2 centre, vec2 f) {
   EdgeLine e;
   e.valid = valid;
   e.distance = texel.g;
-  e.outward = valid ? esm_edge_outward(texelFetch(u_edge, map_texel, 0).r) : vec2(0.0);
+  e.outward = valid ? esm_edge_outward(edge) : vec2(0.0);
   e.centre = centre;
   e.at = e.distance + dot(f - centre, e.outward);
   return e;
@@ -202,8 +204,9 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   // at contacts and where casters meet; edge error on an H200 at 1080p, 512^2 map, 0.91-1.00x
   // on 11 scenes (docs/results/esm.md, 2026-11-29).
   float edge_bias = receiver_slope(cx, cy) * u_edge_bias_texels;
-  vec4 t00 = map_texel(i0, z, edge_bias), t10 = map_texel(i0 + ivec2(1, 0), z, edge_bias);
-  vec4 t01 = map_texel(i0 + ivec2(0, 1), z, edge_bias), t11 = map_texel(i0 + ivec2(1, 1), z, edge_bias);
+  float s00, s10, s01, s11;  // the stored edge values
+  vec4 t00 = map_texel(i0, z, edge_bias, s00), t10 = map_texel(i0 + ivec2(1, 0), z, edge_bias, s10);
+  vec4 t01 = map_texel(i0 + ivec2(0, 1), z, edge_bias, s01), t11 = map_texel(i0 + ivec2(1, 1), z, edge_bias, s11);
   float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
   float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
   vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);
@@ -239,14 +242,14 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   if (all(lessThan(vec4(l00, l10, l01, l11), vec4(boundary)))) return 0.0;
   if (u_edge_lines) {
     // A texel gives its line when it is a quad's own texel whose lit-ness the rules above kept.
-    EdgeLine e00 = edge_line(t00, t00.a == QUAD_TEXEL && !(z > d00 && l00 >= edge_litness()) && !contradiction.x, i0,
+    EdgeLine e00 = edge_line(t00, s00, t00.a == QUAD_TEXEL && !(z > d00 && l00 >= edge_litness()) && !contradiction.x,
                              vec2(0.0, 0.0), f);
-    EdgeLine e10 = edge_line(t10, t10.a == QUAD_TEXEL && !(z > d10 && l10 >= edge_litness()) && !contradiction.y,
-                             i0 + ivec2(1, 0), vec2(1.0, 0.0), f);
-    EdgeLine e01 = edge_line(t01, t01.a == QUAD_TEXEL && !(z > d01 && l01 >= edge_litness()) && !contradiction.z,
-                             i0 + ivec2(0, 1), vec2(0.0, 1.0), f);
-    EdgeLine e11 = edge_line(t11, t11.a == QUAD_TEXEL && !(z > d11 && l11 >= edge_litness()) && !contradiction.w,
-                             i0 + ivec2(1, 1), vec2(1.0, 1.0), f);
+    EdgeLine e10 = edge_line(t10, s10, t10.a == QUAD_TEXEL && !(z > d10 && l10 >= edge_litness()) && !contradiction.y,
+                             vec2(1.0, 0.0), f);
+    EdgeLine e01 = edge_line(t01, s01, t01.a == QUAD_TEXEL && !(z > d01 && l01 >= edge_litness()) && !contradiction.z,
+                             vec2(0.0, 1.0), f);
+    EdgeLine e11 = edge_line(t11, s11, t11.a == QUAD_TEXEL && !(z > d11 && l11 >= edge_litness()) && !contradiction.w,
+                             vec2(1.0, 1.0), f);
     float d;
     vec2 d_outward;
     if (edge_line_distance(e00, e10, e01, e11, f, d, d_outward)) {
