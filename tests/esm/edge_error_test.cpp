@@ -81,11 +81,12 @@ void check_scene(const std::string& name) {
 // the plain map it extends: on every built-in scene, at 256^2 and 512^2, esm's edge error is at
 // most the plain map's of the same size. Measured (llvmpipe, 384x288), edge error esm / plain:
 //   256^2: ball 0.0048/0.0424 fence 0.0079/0.0439 poles 0.0125/0.0532 colonnade 0.0115/0.0371
-//          palms 0.1409/0.1500 showcase 0.0512/0.0858 (0.0871 before the contradiction rule of
+//          palms 0.1122/0.1500 showcase 0.0512/0.0858 (0.0871 before the contradiction rule of
 //          esm_mask.comp.glsl: worse than plain)
 //   512^2: ball 0.0054/0.0258 fence 0.0081/0.0335 poles 0.0076/0.0347 colonnade 0.0075/0.0236
-//          palms 0.0972/0.1016 showcase 0.0153/0.0502
-// Palms' fronds are alpha-masked: they get no quads, so there esm is the plain map.
+//          palms 0.0517/0.1016 showcase 0.0153/0.0502
+// Palms' fronds are alpha-masked: their quads follow the mask's contour (alpha_contours.h);
+// without them (before, alpha_contours=false) palms was 0.1409/0.1500 and 0.0972/0.1016.
 class EsmNeverWorseThanPlain : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(EsmNeverWorseThanPlain, OfTheSameSizeAt256And512) {
@@ -144,8 +145,8 @@ TEST(EsmNearestEdge, ReceiversAtTheirOwnEdgeUseTheNearestEdgeInsteadOfThePlainMa
 // the pickets of showcase, a few texels apart. Measured (llvmpipe, 384x288), edge error lines /
 // bilinear: poles 256^2 0.0125 / 0.0203, 512^2 0.0076 / 0.0107; showcase 0.0512 / 0.0634, 0.0153 /
 // 0.0180. Elsewhere at 512^2 within a few percent either way: ball 0.0054 / 0.0053, fence 0.0081 /
-// 0.0080, palms 0.0972 / 0.0965, colonnade 0.0075 / 0.0075 (the lines' gains there show at 1080p:
-// docs/results/esm.md, "edge lines").
+// 0.0080, palms 0.0517 / 0.0526 (0.0972 / 0.0965 before its fronds had quads), colonnade 0.0075 /
+// 0.0075 (the lines' gains there show at 1080p: docs/results/esm.md, "edge lines").
 TEST(EsmEdgeLines, TheTexelsEdgeLinesBeatBilinearDistancesWhereSilhouettesAreDense) {
   for (const char* name : {"poles", "showcase"}) {
     ExactEdges edges(name);
@@ -163,5 +164,20 @@ TEST(EsmEdgeLines, NoBuiltInSceneLosesMoreThanAFewPercent) {
     const double lines = edges.error_of("esm", 512);
     const double bilinear = edges.error_of("esm", 512, {"edge_lines=false"});
     EXPECT_LE(lines, 1.05 * bilinear) << name;
+  }
+}
+
+// Alpha-masked casters get quads along their mask's contour (techniques/esm/silhouette/
+// alpha_contours.h), and esm's depth pass tests their alpha as the contour is traced: palms'
+// fronds, whose shadow was the plain map's without them. Measured (llvmpipe, 384x288), edge error
+// with / without (alpha_contours=false, the plain map's shadow for the fronds):
+//   256^2: palms 0.1122 / 0.1410    512^2: palms 0.0517 / 0.0972
+// At 256^2 a texel spans several leaflets of a frond, which no single outline per texel fits.
+TEST(EsmAlphaContours, MaskedCastersShadowsFollowTheirMasksContour) {
+  ExactEdges edges("palms");
+  for (int size : {256, 512}) {
+    const double contours = edges.error_of("esm", size);
+    const double none = edges.error_of("esm", size, {"alpha_contours=false"});
+    EXPECT_LT(contours, (size == 256 ? 0.85 : 0.6) * none) << "palms at " << size << "^2";
   }
 }

@@ -282,17 +282,30 @@ TEST(SilhouetteBuilder, MoreEdgesThanTheLimitIsAnErrorNamingTheMeshAndTheLimit) 
   EXPECT_EQ(esm::SilhouetteOptions{}.max_edges, esm::kMaxEdgesPerMesh);
 }
 
-TEST(SilhouetteBuilder, AlphaMaskedMeshesCastNoQuads) {
+// Masked meshes get their mask's contour (alpha_contours_test.cpp): with no texture and a covered
+// factor, their edges' quads; with the contours off, none. Blended materials cast as opaque.
+TEST(SilhouetteBuilder, AlphaMaskedMeshesCastTheirMasksContourOrNothing) {
   scene::Scene s;
   s.materials = {scene::Material{}, scene::Material{.alpha_mode = scene::AlphaMode::mask},
-                 scene::Material{.alpha_mode = scene::AlphaMode::blend}};
-  for (uint32_t m = 0; m < 3; ++m) {
+                 scene::Material{.alpha_mode = scene::AlphaMode::blend},
+                 scene::Material{.base_color_texture = 0, .alpha_mode = scene::AlphaMode::mask}};
+  scene::Image hole{.name = "hole", .width = 2, .height = 2, .pixels = std::vector<uint8_t>(16, 255)};
+  hole.pixels[3] = 0;  // texel (0, 0) uncovered
+  s.images = {hole};
+  for (uint32_t m = 0; m < 4; ++m) {
     s.meshes.push_back(box_mesh());
     s.meshes.back().material = m;
   }
   Result<std::vector<esm::SilhouetteGeometry>> all = esm::build_scene_silhouettes(s);
   ASSERT_TRUE(all);
   EXPECT_EQ((*all)[0].quad_count(), 12u);
-  EXPECT_EQ((*all)[1].quad_count(), 0u);   // mask: the alpha texture makes its shadow edges
+  EXPECT_EQ((*all)[1].quad_count(), 12u);  // mask, no texture, factor alpha 1: covered
   EXPECT_EQ((*all)[2].quad_count(), 12u);  // blend casts as opaque in every shadow map
+  EXPECT_GT((*all)[3].stats.alpha_contours, 0u);
+  EXPECT_EQ((*all)[3].quad_count(), 2 * (*all)[3].stats.alpha_contours);
+  Result<std::vector<esm::SilhouetteGeometry>> off = esm::build_scene_silhouettes(s, {.alpha_contours = false});
+  ASSERT_TRUE(off);
+  EXPECT_EQ((*off)[0].quad_count(), 12u);
+  EXPECT_EQ((*off)[1].quad_count(), 0u);
+  EXPECT_EQ((*off)[3].quad_count(), 0u);
 }

@@ -20,8 +20,13 @@ using graph::Format;
 class DepthPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
+    // Alpha-masked casters' quads follow the contour of the mask's nearest texels (alpha_contours.h):
+    // the depth map tests them the same way, or the two disagree along every contour.
+    std::vector<std::pair<std::string, std::string>> defines;
+    if (ctx.boolean("alpha_contours")) defines.emplace_back("ALPHA_TEST_NEAREST_TEXEL", "1");
     gl::ShaderProgram& p = ctx.program({.vertex = "passes/shadow_map/shadow_map.vert.glsl",
-                                        .fragment = "passes/shadow_map/shadow_map.frag.glsl"});
+                                        .fragment = "passes/shadow_map/shadow_map.frag.glsl",
+                                        .defines = defines});
     if (!p.valid()) return *p.last_error();
     gl::ShaderProgram& clear = ctx.program({.compute = "techniques/esm/shaders/esm_clear.comp.glsl"});
     if (!clear.valid()) return *clear.last_error();
@@ -77,6 +82,9 @@ exec::PassType depth_pass_type() {
       .same_size({"depth", "edge", "edge_depth", "edge_near"})
       .real("slope_bias", 1.5, 0.0, 10.0, "", "Depth pass slope-scaled bias (glPolygonOffset factor)")
       .real("constant_bias", 2.0, 0.0, 1000.0, "depth steps", "Depth pass constant bias (glPolygonOffset units)")
+      .boolean("alpha_contours", false,
+               "Alpha-masked casters tested at the nearest texel of the texture's full-resolution level, as the "
+               "silhouette quads trace their contours; false: the filtered alpha of every shadow map")
       .enumeration("overlap_resolve", "max_blend", {"max_blend", "two_pass"},
                    "Overlapping quads: one MAX-blended pass, or the paper's fallback (an overwriting pass, then a MAX "
                    "pass); the depth pass clears the map for the one chosen")

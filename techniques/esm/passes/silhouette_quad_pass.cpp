@@ -36,7 +36,7 @@ class SilhouetteQuadPass final : public exec::PassImpl {
  public:
   Status execute(exec::PassContext& ctx) override {
     if (!ctx.frame().scene) return {};
-    auto buffers = SilhouetteBuffers::for_scene(*ctx.frame().scene);
+    auto buffers = SilhouetteBuffers::for_scene(*ctx.frame().scene, {.alpha_contours = ctx.boolean("alpha_contours")});
     if (!buffers) return buffers.error();
     buffers_ = *buffers;  // keeps the shared buffers alive while this pass exists
     if (buffers_->instance_quads() == 0) return {};  // no caster edges: the map stays "no edge"
@@ -198,7 +198,10 @@ exec::PassType silhouette_quad_pass_type() {
                        " texels wide and wider, where it pays, else all. The map is the same")
       .real("hidden_edge_tolerance", 2.0, 0.0, 1000.0, "texels",
             "Hidden edges: an edge writes no texel whose surface is nearer the light than the edge (outside its "
-            "occluder) or than its lit facet's plane (inside) by more than this many texel footprints");
+            "occluder) or than its lit facet's plane (inside) by more than this many texel footprints")
+      .boolean("alpha_contours", true,
+               "Alpha-masked casters get quads along their mask's contour (traced in the texture at load); false: "
+               "none, their shadows are the plain map's");
   graph::PassTypeDecl decl = b.decl();
   decl.slots.push_back(blended_attachment("edge", Format::R32F));
   decl.slots.push_back(blended_attachment("edge_depth", Format::R32F));

@@ -55,6 +55,7 @@ constexpr size_t kChunksPerQuad = 4, kMinChunks = 65536;
 struct Cache {
   std::mutex mutex;
   std::uint64_t scene = 0;
+  bool alpha_contours = true;
   std::weak_ptr<SilhouetteBuffers> buffers;
 };
 
@@ -76,6 +77,8 @@ void add(SilhouetteStats& total, const SilhouetteStats& s) {
   total.non_manifold += s.non_manifold;
   total.inconsistent += s.inconsistent;
   total.quads += s.quads;
+  total.alpha_contours += s.alpha_contours;
+  total.alpha_skipped += s.alpha_skipped;
 }
 
 GLint gl_limit(GLenum name) {
@@ -97,16 +100,18 @@ std::vector<std::pair<std::string, std::string>> silhouette_shader_defines() {
           {"SILHOUETTE_FIND_GROUP", std::to_string(kFindGroupSize)}};
 }
 
-Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const exec::GpuScene& gpu) {
+Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const exec::GpuScene& gpu,
+                                                                         const SilhouetteOptions& options) {
   Cache& c = cache();
   std::lock_guard<std::mutex> lock(c.mutex);
   const scene::Scene& s = gpu.cpu();
-  if (auto alive = c.buffers.lock(); alive && c.scene == gpu.serial()) return alive;
+  if (auto alive = c.buffers.lock(); alive && c.scene == gpu.serial() && c.alpha_contours == options.alpha_contours)
+    return alive;
   if (const GLint blocks = gl_limit(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS); blocks < 3)
     return make_error("esm: this OpenGL lets a vertex shader read " + std::to_string(blocks) +
                       " storage buffers; the silhouette quads need 3 (GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS)");
   const auto t0 = std::chrono::steady_clock::now();
-  Result<std::vector<SilhouetteGeometry>> geometry = build_scene_silhouettes(s);
+  Result<std::vector<SilhouetteGeometry>> geometry = build_scene_silhouettes(s, options);
   if (!geometry) return geometry.error();
   std::shared_ptr<SilhouetteBuffers> out(new SilhouetteBuffers());
   std::vector<SilhouetteQuad> quads;
@@ -173,10 +178,12 @@ Result<std::shared_ptr<SilhouetteBuffers>> SilhouetteBuffers::for_scene(const ex
   }
   const SilhouetteStats& t = out->totals_;
   spdlog::info("esm: {} silhouette quads for {} edges of {} triangles ({} open, {} non-manifold, {} bevelled, "
-               "{} degenerate triangles skipped) built in {:.0f} ms",
-               t.quads, t.edges, t.facets, t.open, t.non_manifold, t.beveled, t.degenerate_triangles,
+               "{} degenerate triangles skipped; {} alpha-mask contour pieces, {} masked triangles too large to trace) built in {:.0f} ms",
+               t.quads, t.edges, t.facets, t.open, t.non_manifold, t.beveled, t.degenerate_triangles, t.alpha_contours,
+               t.alpha_skipped,
                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   c.scene = gpu.serial();
+  c.alpha_contours = options.alpha_contours;
   c.buffers = out;
   return out;
 }

@@ -61,11 +61,12 @@ inline constexpr int kComputeFromMapSize = 2048;
 
 class SilhouetteBuffers {
  public:
-  // The buffers of `scene`, built on first use (and again when a different scene is set).
-  // Errors: a mesh with more edges than the builder takes (the Error names it); a scene whose
+  // The buffers of `scene` with `options`, built on first use (and again when a different scene
+  // or other options are set). Errors: a mesh with more edges than the builder takes (the Error names it); a scene whose
   // quads or silhouette list exceed the GL's largest storage buffer; a GL whose vertex shaders
   // cannot read three storage buffers.
-  static Result<std::shared_ptr<SilhouetteBuffers>> for_scene(const exec::GpuScene& scene);
+  static Result<std::shared_ptr<SilhouetteBuffers>> for_scene(const exec::GpuScene& scene,
+                                                               const SilhouetteOptions& options = {});
 
   // This frame's silhouettes from `light` (homogeneous: (position, 1), or (-direction, 0)) into
   // the list and the draw command. Ends with the barriers the indirect draw needs.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "techniques/esm/silhouette/alpha_contours.h"
 #include "techniques/esm/silhouette/edge_adjacency.h"
 
 namespace penumbra::esm {
@@ -18,6 +19,15 @@ glm::vec3 normalized_or(const glm::vec3& v, const glm::vec3& fallback) {
   return len > 1e-6f ? v / len : fallback;
 }
 
+// Facet normals n1, n2 meeting at more than 90 degrees (or folded flat, 180): two quads with
+// the bevel plane between them (Figure 5). `bevel` is the bevel plane's unit normal.
+void add_beveled(std::vector<SilhouetteQuad>& quads, const glm::vec3& a, const glm::vec3& b, const glm::vec3& n1,
+                 const glm::vec3& n2, const glm::vec3& bevel) {
+  const glm::vec4 p1 = plane_through(n1, a), p2 = plane_through(n2, a), pb = plane_through(bevel, a);
+  quads.push_back({a, b, p1, pb, normalized_or(n1 + bevel, bevel)});
+  quads.push_back({a, b, pb, p2, normalized_or(bevel + n2, bevel)});
+}
+
 class QuadWriter {
  public:
   explicit QuadWriter(SilhouetteGeometry& out) : out_(out) {}
@@ -27,22 +37,17 @@ class QuadWriter {
     out_.quads.push_back({a, b, p, q, extrusion});
   }
 
-  // Facet normals n1, n2 meeting at more than 90 degrees (or folded flat, 180): two quads with
-  // the bevel plane between them (Figure 5). `bevel` is the bevel plane's unit normal.
   void beveled(const glm::vec3& a, const glm::vec3& b, const glm::vec3& n1, const glm::vec3& n2, const glm::vec3& bevel) {
-    const glm::vec4 p1 = plane_through(n1, a), p2 = plane_through(n2, a), pb = plane_through(bevel, a);
-    quad(a, b, p1, pb, normalized_or(n1 + bevel, bevel));
-    quad(a, b, pb, p2, normalized_or(bevel + n2, bevel));
+    add_beveled(out_.quads, a, b, n1, n2, bevel);
   }
 
-  // The boundary of facet `f` along its side `side`: a 180-degree fold, bevelled along the
-  // in-plane direction that points away from the facet.
+  // The boundary of facet `f` along its side `side`, away from the facet.
   void open_side(const EdgeAdjacency& adj, const Facet& f, int side) {
     const glm::vec3& a = adj.positions[f.v[side]];
     const glm::vec3& b = adj.positions[f.v[(side + 1) % 3]];
     glm::vec3 outward = glm::cross(b - a, f.normal);
     if (glm::dot(outward, adj.opposite(f, side) - a) > 0.0f) outward = -outward;
-    beveled(a, b, f.normal, -f.normal, normalized_or(outward, f.normal));
+    add_sheet_boundary(out_.quads, a, b, f.normal, outward);
   }
 
  private:
@@ -50,6 +55,11 @@ class QuadWriter {
 };
 
 }  // namespace
+
+void add_sheet_boundary(std::vector<SilhouetteQuad>& quads, const glm::vec3& a, const glm::vec3& b,
+                        const glm::vec3& normal, const glm::vec3& away) {
+  add_beveled(quads, a, b, normal, -normal, normalized_or(away, normal));
+}
 
 // A closed mesh whose facets enclose a negative volume is wound inside out: every facet is
 // turned so its normal points out of the volume (the divergence theorem's sign).
@@ -140,18 +150,20 @@ Result<SilhouetteGeometry> build_silhouette_quads(const scene::Mesh& mesh, const
   return out;
 }
 
-bool casts_silhouette_quads(const scene::Scene& scene, uint32_t mesh) {
-  if (mesh >= scene.meshes.size()) return false;
-  const uint32_t m = scene.meshes[mesh].material;
-  return m >= scene.materials.size() || scene.materials[m].alpha_mode != scene::AlphaMode::mask;
-}
-
 Result<std::vector<SilhouetteGeometry>> build_scene_silhouettes(const scene::Scene& scene,
                                                                 const SilhouetteOptions& options) {
   std::vector<SilhouetteGeometry> out(scene.meshes.size());
   for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
-    if (!casts_silhouette_quads(scene, i)) continue;
-    Result<SilhouetteGeometry> g = build_silhouette_quads(scene.meshes[i], options);
+    const scene::Mesh& mesh = scene.meshes[i];
+    const scene::Material* material = mesh.material < scene.materials.size() ? &scene.materials[mesh.material] : nullptr;
+    Result<SilhouetteGeometry> g = [&]() -> Result<SilhouetteGeometry> {
+      if (!material || material->alpha_mode != scene::AlphaMode::mask) return build_silhouette_quads(mesh, options);
+      if (!options.alpha_contours) return SilhouetteGeometry{};
+      const int texture = material->base_color_texture;
+      const scene::Image* image =
+          texture >= 0 && static_cast<size_t>(texture) < scene.images.size() ? &scene.images[static_cast<size_t>(texture)] : nullptr;
+      return build_alpha_contour_quads(mesh, *material, image, options);
+    }();
     if (!g) {
       Error e = g.error();
       e.where = "scene mesh " + std::to_string(i) + " '" + scene.meshes[i].name + "'";

@@ -61,6 +61,13 @@ inline bool is_silhouette(const SilhouetteQuad& quad, const glm::vec4& light) {
   return (glm::dot(quad.p, light) > 0.0f) != (glm::dot(quad.q, light) > 0.0f);
 }
 
+// The boundary of a sheet (a facet of unit normal `normal`) along a-b, `away` the direction in its
+// plane pointing away from it: the edge is a silhouette from every light not in that plane, a
+// 180-degree fold of the facet against its own flipped plane, bevelled along `away` (two quads
+// appended to `quads`). Open mesh edges and alpha-mask contours (alpha_contours.h) are such edges.
+void add_sheet_boundary(std::vector<SilhouetteQuad>& quads, const glm::vec3& a, const glm::vec3& b,
+                        const glm::vec3& normal, const glm::vec3& away);
+
 // Edges a mesh may have: 2^24 (16,777,216). More is an Error naming the mesh and this limit.
 // Every edge gives at most two quads (a bevel) per facet using it, so the per-mesh buffers stay
 // within a few GiB at worst; the scene's total must also fit the GL's largest storage buffer.
@@ -69,6 +76,7 @@ inline constexpr size_t kMaxEdgesPerMesh = size_t{1} << 24;
 struct SilhouetteOptions {
   float weld_tolerance = 1e-6f;          // x the mesh's bounding-box diagonal
   size_t max_edges = kMaxEdgesPerMesh;   // more is an Error naming the mesh
+  bool alpha_contours = true;            // alpha-masked meshes: their mask's contour, or no quads
 };
 
 struct SilhouetteStats {
@@ -76,6 +84,8 @@ struct SilhouetteStats {
   size_t edges = 0, coplanar = 0, concave = 0, convex = 0, beveled = 0;
   size_t open = 0, non_manifold = 0, inconsistent = 0;
   size_t quads = 0;
+  size_t alpha_contours = 0;  // alpha-mask contour pieces (alpha_contours.h), one boundary each
+  size_t alpha_skipped = 0;   // masked triangles whose texture footprint was too large to trace
   bool flipped = false;  // a closed mesh wound inside out, turned outwards
 };
 
@@ -90,13 +100,11 @@ struct SilhouetteGeometry {
 // options.max_edges is an Error naming the mesh and the limit, found before any quad is made.
 Result<SilhouetteGeometry> build_silhouette_quads(const scene::Mesh& mesh, const SilhouetteOptions& options = {});
 
-// Alpha-masked materials get no quads: their shadow edges come from the texture's alpha (the
-// depth pass alpha-tests them like every shadow map), not from the geometry, whose edges are not
-// where the shadow ends. Their shadows are the plain shadow map's. Blended materials cast as
-// opaque in every shadow map, so they get quads.
-bool casts_silhouette_quads(const scene::Scene& scene, uint32_t mesh);
-
-// Every mesh's quads (empty for meshes that cast none); the Error names the mesh and its index.
+// Every mesh's quads; the Error names the mesh and its index. Alpha-masked meshes get the quads
+// of their mask's contour instead of their edges (alpha_contours.h): their shadow ends where the
+// texture's alpha crosses the cutoff (the depth pass alpha-tests them like every shadow map), not
+// at the geometry's edges; with options.alpha_contours false they get none, and their shadows
+// are the plain map's. Blended materials cast as opaque in every shadow map: edge quads.
 Result<std::vector<SilhouetteGeometry>> build_scene_silhouettes(const scene::Scene& scene,
                                                                 const SilhouetteOptions& options = {});
 
