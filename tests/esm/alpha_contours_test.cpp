@@ -150,13 +150,17 @@ TEST(AlphaContours, AStaircaseIsThinnedToItsLine) {
   EXPECT_GE(covered_length, 0.95 * 56.0 * std::sqrt(1.16));
 }
 
-TEST(AlphaContours, MasksWithNoOutlineGiveNoQuads) {
+TEST(AlphaContours, MasksWithNoOutlineAndMeshesWithNoTriangleGiveNoQuads) {
   for (bool covered : {false, true}) {
     const scene::Image img = mask_image(8, [&](int, int) { return covered; });
     Result<esm::SilhouetteGeometry> g = esm::build_alpha_contour_quads(sheet(), kMask, &img);
     ASSERT_TRUE(g);
     EXPECT_EQ(g->quad_count(), 0u) << (covered ? "covered" : "uncovered");
   }
+  const scene::Image img = mask_image(8, [](int x, int) { return x < 4; });
+  Result<esm::SilhouetteGeometry> empty = esm::build_alpha_contour_quads(scene::Mesh{.name = "empty"}, kMask, &img);
+  ASSERT_TRUE(empty);
+  EXPECT_EQ(empty->quad_count(), 0u);
 }
 
 // Without a texture the base colour factor's alpha alone decides: a covered mesh casts like an
@@ -209,8 +213,9 @@ TEST(AlphaContours, TooManyContourPiecesIsAnErrorNamingTheMeshAndTheLimit) {
   EXPECT_TRUE(esm::build_alpha_contour_quads(m, kMask, &checker));  // within the shipped limit
 }
 
-// A triangle whose texture footprint spans more texel cells than kMaxContourCells is skipped and
-// counted, as are triangles with no area in space or in the texture.
+// A triangle whose texture footprint spans more texel cells than kMaxContourCells, or beyond the
+// mesh's budget of traced cells, is skipped and counted, as are triangles with no area in space
+// or in the texture.
 TEST(AlphaContours, HugeFootprintsAndDegenerateTrianglesAreSkippedAndCounted) {
   const scene::Image img = mask_image(16, [](int x, int) { return x < 8; });
   scene::Mesh huge = sheet(0.0f, 400.0f);
@@ -219,6 +224,12 @@ TEST(AlphaContours, HugeFootprintsAndDegenerateTrianglesAreSkippedAndCounted) {
   ASSERT_TRUE(g);
   EXPECT_EQ(g->stats.alpha_skipped, 2u);
   EXPECT_EQ(g->quad_count(), 0u);
+
+  // The mesh's budget: the first triangle (16^2 + border cells) fits 400 cells, the second not.
+  Result<esm::SilhouetteGeometry> budget = esm::build_alpha_contour_quads(sheet(), kMask, &img, {.max_contour_cells = 400});
+  ASSERT_TRUE(budget);
+  EXPECT_EQ(budget->stats.alpha_skipped, 1u);
+  EXPECT_GT(budget->quad_count(), 0u);
 
   scene::Mesh bad = sheet();
   for (scene::Vertex& v : bad.vertices) v.uv = {0.5f, 0.5f};  // no texture area

@@ -25,9 +25,10 @@ struct Crossing {
     return h == 0 ? Point{static_cast<float>(x) + 1.0f, static_cast<float>(y) + 0.5f}
                   : Point{static_cast<float>(x) + 0.5f, static_cast<float>(y) + 1.0f};
   }
-  // Unique within a region whose corner is (x0, y0) (kMaxContourCells keeps both offsets < 2^25).
-  uint64_t key(long x0, long y0) const {
-    return ((static_cast<uint64_t>(y - y0) << 26 | static_cast<uint64_t>(x - x0)) << 1) | static_cast<uint64_t>(h);
+  // Unique within a region whose corner is (x0, y0) and whose rows are `stride` texels long.
+  uint64_t key(long x0, long y0, long stride) const {
+    return (static_cast<uint64_t>(y - y0) * static_cast<uint64_t>(stride) + static_cast<uint64_t>(x - x0)) * 2 +
+           static_cast<uint64_t>(h);
   }
 };
 
@@ -102,12 +103,15 @@ bool AlphaMask::textured() const {
          image->pixels.size() >= static_cast<size_t>(image->width) * static_cast<size_t>(image->height) * 4;
 }
 
+bool AlphaMask::covers(float texture_alpha) const {
+  return !(factor_alpha * texture_alpha < cutoff);  // the reference's test, "alpha < cutoff is a hole"
+}
+
 bool AlphaMask::covered(long x, long y) const {
-  if (!textured()) return !(factor_alpha < cutoff);
+  if (!textured()) return covers(1.0f);
   const long w = image->width, h = image->height;
   const long xi = ((x % w) + w) % w, yi = ((y % h) + h) % h;
-  const float a = image->pixels[(static_cast<size_t>(yi) * static_cast<size_t>(w) + static_cast<size_t>(xi)) * 4 + 3] / 255.0f;
-  return !(factor_alpha * a < cutoff);  // the reference's test, "alpha < cutoff is a hole"
+  return covers(image->pixels[(static_cast<size_t>(yi) * static_cast<size_t>(w) + static_cast<size_t>(xi)) * 4 + 3] / 255.0f);
 }
 
 void trace_alpha_contour(const AlphaMask& mask, long x0, long y0, long x1, long y1, std::vector<ContourSegment>& out) {
@@ -116,8 +120,18 @@ void trace_alpha_contour(const AlphaMask& mask, long x0, long y0, long x1, long 
     return;
   const long w = x1 - x0 + 1;
   std::vector<char> cov(static_cast<size_t>(w) * static_cast<size_t>(y1 - y0 + 1));
-  for (long y = y0; y <= y1; ++y)
-    for (long x = x0; x <= x1; ++x) cov[static_cast<size_t>((y - y0) * w + (x - x0))] = mask.covered(x, y);
+  if (mask.textured()) {  // the mask row by row, the wrapped columns found once
+    const long iw = mask.image->width, ih = mask.image->height;
+    std::vector<size_t> column(static_cast<size_t>(w));
+    for (long x = x0; x <= x1; ++x) column[static_cast<size_t>(x - x0)] = static_cast<size_t>(((x % iw) + iw) % iw);
+    for (long y = y0; y <= y1; ++y) {
+      const uint8_t* row = &mask.image->pixels[static_cast<size_t>(((y % ih) + ih) % ih) * static_cast<size_t>(iw) * 4];
+      char* out_row = &cov[static_cast<size_t>((y - y0) * w)];
+      for (long x = 0; x < w; ++x) out_row[x] = mask.covers(row[column[static_cast<size_t>(x)] * 4 + 3] / 255.0f);
+    }
+  } else {
+    std::fill(cov.begin(), cov.end(), mask.covered(0, 0));
+  }
   auto at = [&](long x, long y) { return cov[static_cast<size_t>((y - y0) * w + (x - x0))] != 0; };
   // Marching squares over the cells between texel centres. Walking a cell's corners k0 (x, y),
   // k1 (x+1, y), k2 (x+1, y+1), k3 (x, y+1), the crossing on side k enters the mask when k is
@@ -140,30 +154,31 @@ void trace_alpha_contour(const AlphaMask& mask, long x0, long y0, long x1, long 
         }
       }
     }
-  // Join the pieces into chains (a crossing inside the region ends one piece and starts the next).
-  std::unordered_map<uint64_t, size_t> starting;
-  std::unordered_map<uint64_t, char> ending;
+  // Join the pieces into chains: a crossing inside the region ends one piece and starts the next.
+  std::unordered_map<uint64_t, uint32_t> starting;
   starting.reserve(pieces.size());
-  for (size_t i = 0; i < pieces.size(); ++i) {
-    starting[pieces[i].first.key(x0, y0)] = i;
-    ending[pieces[i].second.key(x0, y0)] = 1;
-  }
+  for (size_t i = 0; i < pieces.size(); ++i) starting.emplace(pieces[i].first.key(x0, y0, w), static_cast<uint32_t>(i));
+  constexpr uint32_t kNone = UINT32_MAX;
+  std::vector<uint32_t> next(pieces.size(), kNone);
+  std::vector<char> entered(pieces.size(), 0);  // some piece leads into it
+  for (size_t i = 0; i < pieces.size(); ++i)
+    if (auto it = starting.find(pieces[i].second.key(x0, y0, w)); it != starting.end()) {
+      next[i] = it->second;
+      entered[it->second] = 1;
+    }
   std::vector<char> used(pieces.size(), 0);
   std::vector<Point> chain;
   auto walk = [&](size_t i) {
     chain.clear();
     chain.push_back(pieces[i].first.point());
-    while (!used[i]) {
-      used[i] = 1;
-      chain.push_back(pieces[i].second.point());
-      auto next = starting.find(pieces[i].second.key(x0, y0));
-      if (next == starting.end()) break;
-      i = next->second;
+    for (uint32_t k = static_cast<uint32_t>(i); k != kNone && !used[k]; k = next[k]) {
+      used[k] = 1;
+      chain.push_back(pieces[k].second.point());
     }
     emit_thinned(chain, out);
   };
   for (size_t i = 0; i < pieces.size(); ++i)  // open chains first, from their starts
-    if (!used[i] && !ending.count(pieces[i].first.key(x0, y0))) walk(i);
+    if (!used[i] && !entered[i]) walk(i);
   for (size_t i = 0; i < pieces.size(); ++i)  // then the closed loops
     if (!used[i]) walk(i);
 }
@@ -179,6 +194,7 @@ Result<SilhouetteGeometry> build_alpha_contour_quads(const scene::Mesh& mesh, co
   SilhouetteStats& st = out.stats;
   const glm::vec2 texels(static_cast<float>(image->width), static_cast<float>(image->height));
   std::vector<ContourSegment> contour;
+  size_t traced_cells = 0;
   for (size_t t = 0; t < mesh.triangle_count(); ++t) {
     const uint32_t* idx = &mesh.indices[3 * t];
     if (idx[0] >= mesh.vertices.size() || idx[1] >= mesh.vertices.size() || idx[2] >= mesh.vertices.size()) {
@@ -200,10 +216,13 @@ Result<SilhouetteGeometry> build_alpha_contour_quads(const scene::Mesh& mesh, co
     const glm::vec2 lo = glm::min(tx[0], glm::min(tx[1], tx[2])), hi = glm::max(tx[0], glm::max(tx[1], tx[2]));
     const long x0 = static_cast<long>(std::floor(lo.x)) - 1, x1 = static_cast<long>(std::floor(hi.x)) + 1;
     const long y0 = static_cast<long>(std::floor(lo.y)) - 1, y1 = static_cast<long>(std::floor(hi.y)) + 1;
-    if (static_cast<double>(x1 - x0) * static_cast<double>(y1 - y0) > static_cast<double>(kMaxContourCells)) {
+    const double cells = static_cast<double>(x1 - x0) * static_cast<double>(y1 - y0);
+    if (cells > static_cast<double>(kMaxContourCells) ||
+        static_cast<double>(traced_cells) + cells > static_cast<double>(options.max_contour_cells)) {
       ++st.alpha_skipped;
       continue;
     }
+    traced_cells += static_cast<size_t>(cells);
     contour.clear();
     trace_alpha_contour(mask, x0, y0, x1, y1, contour);
     // Texture texels -> object space: affine over the triangle (its barycentric coordinates).

@@ -15,7 +15,8 @@
 //    (Douglas-Peucker). Diagonal neighbours do not connect;
 //  - the mesh's own edges where the mask is opaque up to them get no quads (the plain depth
 //    test decides there), nor do the mask's contours on triangles whose texture footprint
-//    exceeds kMaxContourCells texel cells (counted in SilhouetteStats::alpha_skipped).
+//    exceeds kMaxContourCells texel cells, or once the mesh's triangles have traced
+//    SilhouetteOptions::max_contour_cells (counted in SilhouetteStats::alpha_skipped).
 //
 //   Result<SilhouetteGeometry> g = build_alpha_contour_quads(mesh, material, &image);
 #include <cstddef>
@@ -45,6 +46,7 @@ struct AlphaMask {
   float factor_alpha = 1.0f;
   float cutoff = 0.5f;
   bool textured() const;
+  bool covers(float texture_alpha) const;  // a texel of this alpha
   bool covered(long x, long y) const;
 };
 

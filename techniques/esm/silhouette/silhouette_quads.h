@@ -73,10 +73,17 @@ void add_sheet_boundary(std::vector<SilhouetteQuad>& quads, const glm::vec3& a, 
 // within a few GiB at worst; the scene's total must also fit the GL's largest storage buffer.
 inline constexpr size_t kMaxEdgesPerMesh = size_t{1} << 24;
 
+// Texel cells of an alpha-masked mesh's texture footprints traced at load (alpha_contours.h):
+// 2^27, about 2.4 s at worst in a release build (a 4096^2 footprint of a dense mask takes 0.6 s).
+// The triangles beyond are skipped and counted (a mask tiled many times over a large mesh), their
+// shadows the plain map's.
+inline constexpr size_t kMaxContourCellsPerMesh = size_t{1} << 27;
+
 struct SilhouetteOptions {
   float weld_tolerance = 1e-6f;          // x the mesh's bounding-box diagonal
   size_t max_edges = kMaxEdgesPerMesh;   // more is an Error naming the mesh
   bool alpha_contours = true;            // alpha-masked meshes: their mask's contour, or no quads
+  size_t max_contour_cells = kMaxContourCellsPerMesh;  // per mesh; triangles beyond are skipped
 };
 
 struct SilhouetteStats {
