@@ -241,15 +241,12 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   // gradient, could call receivers deep in the shadow partly lit. Outside, the band is wider.)
   if (all(lessThan(vec4(l00, l10, l01, l11), vec4(boundary)))) return 0.0;
   if (u_edge_lines) {
-    // A texel gives its line when it is a quad's own texel whose lit-ness the rules above kept.
-    EdgeLine e00 = edge_line(t00, s00, t00.a == QUAD_TEXEL && !(z > d00 && l00 >= edge_litness()) && !contradiction.x,
-                             vec2(0.0, 0.0), f);
-    EdgeLine e10 = edge_line(t10, s10, t10.a == QUAD_TEXEL && !(z > d10 && l10 >= edge_litness()) && !contradiction.y,
-                             vec2(1.0, 0.0), f);
-    EdgeLine e01 = edge_line(t01, s01, t01.a == QUAD_TEXEL && !(z > d01 && l01 >= edge_litness()) && !contradiction.z,
-                             vec2(0.0, 1.0), f);
-    EdgeLine e11 = edge_line(t11, s11, t11.a == QUAD_TEXEL && !(z > d11 && l11 >= edge_litness()) && !contradiction.w,
-                             vec2(1.0, 1.0), f);
+    // A texel gives its line when map_texel kept its own quads (not the nearest edge alone: no
+    // distance) and it does not contradict the depth map.
+    EdgeLine e00 = edge_line(t00, s00, t00.a == QUAD_TEXEL && !contradiction.x, vec2(0.0, 0.0), f);
+    EdgeLine e10 = edge_line(t10, s10, t10.a == QUAD_TEXEL && !contradiction.y, vec2(1.0, 0.0), f);
+    EdgeLine e01 = edge_line(t01, s01, t01.a == QUAD_TEXEL && !contradiction.z, vec2(0.0, 1.0), f);
+    EdgeLine e11 = edge_line(t11, s11, t11.a == QUAD_TEXEL && !contradiction.w, vec2(1.0, 1.0), f);
     float d;
     vec2 d_outward;
     if (edge_line_distance(e00, e10, e01, e11, f, d, d_outward)) {

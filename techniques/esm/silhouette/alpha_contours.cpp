@@ -12,6 +12,26 @@
 namespace penumbra::esm {
 namespace {
 
+// One side of the mask's outline in texture texels (x = u * width, y = v * height), oriented so
+// that the transparent side is on the left of a -> b: outward (-dy, dx) for direction (dx, dy).
+struct ContourSegment {
+  float ax = 0, ay = 0, bx = 0, by = 0;
+};
+
+// Whether a texel of alpha `texture_alpha` (0-1) of `image` is covered: factor_alpha x alpha >=
+// cutoff, the reference's test ("alpha < cutoff is a hole"). Without an image (null, empty or short
+// of its pixels) the factor alone decides.
+struct AlphaMask {
+  const scene::Image* image = nullptr;
+  float factor_alpha = 1.0f;
+  float cutoff = 0.5f;
+  bool textured() const {
+    return image && image->width > 0 && image->height > 0 &&
+           image->pixels.size() >= static_cast<size_t>(image->width) * static_cast<size_t>(image->height) * 4;
+  }
+  bool covers(float texture_alpha) const { return !(factor_alpha * texture_alpha < cutoff); }
+};
+
 struct Point {
   float x, y;
 };
@@ -96,24 +116,8 @@ bool clip_to_triangle(const glm::vec2 t[3], glm::vec2& a, glm::vec2& b) {
   return true;
 }
 
-}  // namespace
-
-bool AlphaMask::textured() const {
-  return image && image->width > 0 && image->height > 0 &&
-         image->pixels.size() >= static_cast<size_t>(image->width) * static_cast<size_t>(image->height) * 4;
-}
-
-bool AlphaMask::covers(float texture_alpha) const {
-  return !(factor_alpha * texture_alpha < cutoff);  // the reference's test, "alpha < cutoff is a hole"
-}
-
-bool AlphaMask::covered(long x, long y) const {
-  if (!textured()) return covers(1.0f);
-  const long w = image->width, h = image->height;
-  const long xi = ((x % w) + w) % w, yi = ((y % h) + h) % h;
-  return covers(image->pixels[(static_cast<size_t>(yi) * static_cast<size_t>(w) + static_cast<size_t>(xi)) * 4 + 3] / 255.0f);
-}
-
+// The mask's contour over the texel cells whose centres span [x0, x1] x [y0, y1] (texel indices,
+// repeat wrap), thinned, appended to `out`; nothing for a region of more than 4 x kMaxContourCells.
 void trace_alpha_contour(const AlphaMask& mask, long x0, long y0, long x1, long y1, std::vector<ContourSegment>& out) {
   if (x1 <= x0 || y1 <= y0 ||
       static_cast<double>(x1 - x0 + 1) * static_cast<double>(y1 - y0 + 1) > 4.0 * static_cast<double>(kMaxContourCells))
@@ -130,7 +134,7 @@ void trace_alpha_contour(const AlphaMask& mask, long x0, long y0, long x1, long 
       for (long x = 0; x < w; ++x) out_row[x] = mask.covers(row[column[static_cast<size_t>(x)] * 4 + 3] / 255.0f);
     }
   } else {
-    std::fill(cov.begin(), cov.end(), mask.covered(0, 0));
+    std::fill(cov.begin(), cov.end(), mask.covers(1.0f));
   }
   auto at = [&](long x, long y) { return cov[static_cast<size_t>((y - y0) * w + (x - x0))] != 0; };
   // Marching squares over the cells between texel centres. Walking a cell's corners k0 (x, y),
@@ -183,11 +187,13 @@ void trace_alpha_contour(const AlphaMask& mask, long x0, long y0, long x1, long 
     if (!used[i]) walk(i);
 }
 
+}  // namespace
+
 Result<SilhouetteGeometry> build_alpha_contour_quads(const scene::Mesh& mesh, const scene::Material& material,
                                                      const scene::Image* image, const SilhouetteOptions& options) {
   const AlphaMask mask{image, material.base_color_factor.a, material.alpha_cutoff};
   if (!mask.textured()) {
-    if (mask.covered(0, 0)) return build_silhouette_quads(mesh, options);
+    if (mask.covers(1.0f)) return build_silhouette_quads(mesh, options);
     return SilhouetteGeometry{};
   }
   SilhouetteGeometry out;

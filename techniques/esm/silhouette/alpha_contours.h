@@ -33,27 +33,6 @@ inline constexpr float kContourTolerance = 0.75f;
 // texture and its border fit (the trace keeps a byte a cell, 32 MiB at most).
 inline constexpr size_t kMaxContourCells = size_t{1} << 25;
 
-// One side of the mask's outline in texture texels (x = u * width, y = v * height), oriented so
-// that the transparent side is on the left of a -> b: outward (-dy, dx) for direction (dx, dy).
-struct ContourSegment {
-  float ax = 0, ay = 0, bx = 0, by = 0;
-};
-
-// Whether a texel of `image` is covered: factor_alpha x alpha / 255 >= cutoff, repeat wrap.
-// Without an image (null, empty or short of pixels) the factor alone decides.
-struct AlphaMask {
-  const scene::Image* image = nullptr;
-  float factor_alpha = 1.0f;
-  float cutoff = 0.5f;
-  bool textured() const;
-  bool covers(float texture_alpha) const;  // a texel of this alpha
-  bool covered(long x, long y) const;
-};
-
-// The mask's contour over the texel cells whose centres span [x0, x1] x [y0, y1] (texel indices),
-// thinned, appended to `out`; nothing for a region of more than 4 x kMaxContourCells texels.
-void trace_alpha_contour(const AlphaMask& mask, long x0, long y0, long x1, long y1, std::vector<ContourSegment>& out);
-
 // The quads of a masked mesh: its contour pieces inside each triangle, mapped to object space.
 // `image` may be null (no texture): the factor's alpha alone decides, and a covered mesh gets
 // build_silhouette_quads' quads, an uncovered one none. More contour pieces than
