@@ -4,11 +4,11 @@
 // "designed to be used with low-resolution shadow maps").
 //
 // Measured (llvmpipe, 384x288, 4x4 samples per pixel in the reference), edge error:
-//   ball        256^2: esm 0.0048 hard 0.0424 | 512^2: 0.0054 / 0.0258 | 1024^2: 0.0064 / 0.0214 | hard 2048^2 0.0202
-//   fence       256^2: esm 0.0079 hard 0.0439 | 512^2: 0.0081 / 0.0335 | 1024^2: 0.0100 / 0.0281 | hard 2048^2 0.0263
-//   poles       256^2: esm 0.0125 hard 0.0532 | 512^2: 0.0076 / 0.0347 | 1024^2: 0.0086 / 0.0276 | hard 2048^2 0.0263
-//   colonnade   256^2: esm 0.0115 hard 0.0371 | 512^2: 0.0075 / 0.0236 | 1024^2: 0.0086 / 0.0204 | hard 2048^2 0.0193
-//   showcase    256^2: esm 0.0512 hard 0.0858 | 512^2: 0.0153 / 0.0502 | 1024^2: 0.0130 / 0.0334 | hard 2048^2 0.0287
+//   ball        256^2: esm 0.0047 hard 0.0424 | 512^2: 0.0053 / 0.0258 | 1024^2: 0.0064 / 0.0214 | hard 2048^2 0.0202
+//   fence       256^2: esm 0.0081 hard 0.0439 | 512^2: 0.0082 / 0.0335 | 1024^2: 0.0100 / 0.0281 | hard 2048^2 0.0263
+//   poles       256^2: esm 0.0131 hard 0.0532 | 512^2: 0.0075 / 0.0347 | 1024^2: 0.0085 / 0.0276 | hard 2048^2 0.0263
+//   colonnade   256^2: esm 0.0096 hard 0.0371 | 512^2: 0.0075 / 0.0236 | 1024^2: 0.0087 / 0.0204 | hard 2048^2 0.0193
+//   showcase    256^2: esm 0.0502 hard 0.0858 | 512^2: 0.0139 / 0.0502 | 1024^2: 0.0129 / 0.0334 | hard 2048^2 0.0287
 // Showcase at 512^2 was 0.0302 before the band was made linear and its key kept the nearest edge
 // inside an occluder (esm_common.glsl): worse than hard at 2048^2.
 // The bounds below are the claims themselves (with a 10% margin on "below"), not the numbers.
@@ -80,11 +80,11 @@ void check_scene(const std::string& name) {
 // Dense silhouettes (pickets, bars and leaves a few texels apart) must never make esm worse than
 // the plain map it extends: on every built-in scene, at 256^2 and 512^2, esm's edge error is at
 // most the plain map's of the same size. Measured (llvmpipe, 384x288), edge error esm / plain:
-//   256^2: ball 0.0048/0.0424 fence 0.0079/0.0439 poles 0.0125/0.0532 colonnade 0.0115/0.0371
-//          palms 0.1122/0.1500 showcase 0.0512/0.0858 (0.0871 before the contradiction rule of
+//   256^2: ball 0.0047/0.0424 fence 0.0081/0.0439 poles 0.0131/0.0532 colonnade 0.0096/0.0371
+//          palms 0.1118/0.1500 showcase 0.0502/0.0858 (0.0871 before the contradiction rule of
 //          esm_mask.comp.glsl: worse than plain)
-//   512^2: ball 0.0054/0.0258 fence 0.0081/0.0335 poles 0.0076/0.0347 colonnade 0.0075/0.0236
-//          palms 0.0517/0.1016 showcase 0.0153/0.0502
+//   512^2: ball 0.0053/0.0258 fence 0.0082/0.0335 poles 0.0075/0.0347 colonnade 0.0075/0.0236
+//          palms 0.0517/0.1016 showcase 0.0139/0.0502
 // Palms' fronds are alpha-masked: their quads follow the mask's contour (alpha_contours.h);
 // without them (before, alpha_contours=false) palms was 0.1409/0.1500 and 0.0972/0.1016.
 class EsmNeverWorseThanPlain : public ::testing::TestWithParam<const char*> {};
@@ -110,12 +110,13 @@ INSTANTIATE_TEST_SUITE_P(BuiltIn, EsmEdgeError, ::testing::Values("ball", "fence
                          [](const ::testing::TestParamInfo<const char*>& i) { return std::string(i.param); });
 
 // edge_bias (esm_mask.comp.glsl): a receiver counts as behind a silhouette edge when deeper than it
-// by more than its own depth change over edge_bias texels; nearer ones get the plain test. The
-// default, half a texel, replaced 2.91 (the band inside the edge plus the bilinear footprint),
-// which handed the plain map's staircase to receivers near contacts and crossing casters.
-// Measured (llvmpipe, 384x288, 512^2), edge error 0.5 / 2.91: colonnade 0.0075 / 0.0092, showcase
-// 0.0153 / 0.0208 (techniques/esm/README.md "Defaults, from measurements").
-TEST(EsmEdgeBias, TheDefaultHalfTexelBeatsTheBandWideBiasItReplaced) {
+// by more than its own depth change over edge_bias texels (and, with edge_plane, its plane at the
+// edge's line: edge_plane_test.cpp); nearer ones get the plain test. A tenth of a texel with the
+// plane, half a texel before it; both replaced 2.91 (the band inside the edge plus the bilinear
+// footprint), which handed the plain map's staircase to receivers near contacts and crossing
+// casters. Measured (llvmpipe, 384x288, 512^2), edge error 0.1 / 2.91: colonnade 0.0075 / 0.0092,
+// showcase 0.0139 / 0.0208 (techniques/esm/README.md "Defaults, from measurements").
+TEST(EsmEdgeBias, TheDefaultBeatsTheBandWideBiasItReplaced) {
   for (const char* name : {"colonnade", "showcase"}) {
     ExactEdges edges(name);
     const double shipped = edges.error_of("esm", 512);
@@ -127,8 +128,8 @@ TEST(EsmEdgeBias, TheDefaultHalfTexelBeatsTheBandWideBiasItReplaced) {
 // nearest_edge (esm_mask.comp.glsl, map_texel): where a receiver is not behind a texel's farthest
 // edge (its own, at a contact: an arch under its beam, a column's foot) but is behind the texel's
 // nearest one, that edge alone decides instead of the plain map. Measured (llvmpipe, 384x288,
-// 512^2), edge error with / without: colonnade 0.0075 / 0.0094, showcase 0.0153 / 0.0222, fence
-// 0.0081 / 0.0087.
+// 512^2), edge error with / without: colonnade 0.0075 / 0.0093, showcase 0.0139 / 0.0207, fence
+// 0.0082 / 0.0088.
 TEST(EsmNearestEdge, ReceiversAtTheirOwnEdgeUseTheNearestEdgeInsteadOfThePlainMap) {
   for (const char* name : {"colonnade", "showcase", "fence"}) {
     ExactEdges edges(name);
@@ -143,8 +144,8 @@ TEST(EsmNearestEdge, ReceiversAtTheirOwnEdgeUseTheNearestEdgeInsteadOfThePlainMa
 // combined with the others' at corners, instead of bilinear interpolation of the distances, which
 // bends the boundary wherever the footprint's texels hold different edges: the bars of poles and
 // the pickets of showcase, a few texels apart. Measured (llvmpipe, 384x288), edge error lines /
-// bilinear: poles 256^2 0.0125 / 0.0203, 512^2 0.0076 / 0.0107; showcase 0.0512 / 0.0634, 0.0153 /
-// 0.0180. Elsewhere at 512^2 within a few percent either way: ball 0.0054 / 0.0053, fence 0.0081 /
+// bilinear: poles 256^2 0.0131 / 0.0203, 512^2 0.0075 / 0.0106; showcase 0.0502 / 0.0616, 0.0139 /
+// 0.0173. Elsewhere at 512^2 within a few percent either way: ball 0.0053 / 0.0053, fence 0.0082 /
 // 0.0080, palms 0.0517 / 0.0526 (0.0972 / 0.0965 before its fronds had quads), colonnade 0.0075 /
 // 0.0075 (the lines' gains there show at 1080p: docs/results/esm.md, "edge lines").
 TEST(EsmEdgeLines, TheTexelsEdgeLinesBeatBilinearDistancesWhereSilhouettesAreDense) {
@@ -171,7 +172,7 @@ TEST(EsmEdgeLines, NoBuiltInSceneLosesMoreThanAFewPercent) {
 // alpha_contours.h), and esm's depth pass tests their alpha as the contour is traced: palms'
 // fronds, whose shadow was the plain map's without them. Measured (llvmpipe, 384x288), edge error
 // with / without (alpha_contours=false, the plain map's shadow for the fronds):
-//   256^2: palms 0.1122 / 0.1410    512^2: palms 0.0517 / 0.0972
+//   256^2: palms 0.1118 / 0.1407    512^2: palms 0.0517 / 0.0971
 // At 256^2 a texel spans several leaflets of a frond, which no single outline per texel fits.
 TEST(EsmAlphaContours, MaskedCastersShadowsFollowTheirMasksContour) {
   ExactEdges edges("palms");

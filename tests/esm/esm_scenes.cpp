@@ -1,5 +1,7 @@
 #include "esm_scenes.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "scene/mesh_builder.h"
 
 namespace penumbra::test {
@@ -77,6 +79,44 @@ scene::Scene crossed_pipes(float radius, float gap) {
   s.light.spot_angle = glm::radians(35.0f);
   s.light.size = 0.0f;
   s.camera = view({-0.6f, -0.4f, 4.5f}, {0.0f, 0.0f, 0.0f}, 45.0f);
+  return s;
+}
+
+scene::Scene plates_and_sheet(float thickness, const glm::vec3& light) {
+  scene::Scene s;
+  s.name = "plates_and_sheet";
+  scene::Mesh ground;
+  ground.name = "ground";
+  scene::build::add_ground(ground, {0, 0, 0}, 8.0f, 8.0f);
+  add(s, std::move(ground), material(s, glm::vec3(0.75f)));
+  scene::Mesh plates;
+  plates.name = "plates";
+  const glm::vec3 half(0.35f, 0.5f * thickness, 0.15f);
+  const float turns[] = {0.0f, 25.0f, 60.0f, 110.0f};
+  const glm::vec2 places[] = {{-0.45f, 0.45f}, {0.45f, 0.45f}, {-0.45f, -0.3f}, {0.45f, -0.3f}};
+  for (int i = 0; i < 4; ++i) {
+    const glm::mat3 turn(glm::rotate(glm::mat4(1.0f), glm::radians(turns[i]), glm::vec3(0, 1, 0)));
+    scene::build::add_box(plates, {places[i].x, 0.5f * thickness, places[i].y}, half, turn);
+  }
+  add(s, std::move(plates), material(s, glm::vec3(0.4f, 0.5f, 0.8f)));
+  scene::Mesh sheet;
+  sheet.name = "sheet";
+  scene::build::add_ground(sheet, {0, 0, 0}, 0.6f, 0.5f);
+  // Rising by 25 degrees towards the light's side (+x), where its rim is nearest the light.
+  const glm::mat4 place = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0.45f, -1.0f)) *
+                          glm::rotate(glm::mat4(1.0f), glm::radians(25.0f), glm::vec3(0, 0, 1));
+  for (scene::Vertex& v : sheet.vertices) {
+    v.position = glm::vec3(place * glm::vec4(v.position, 1.0f));
+    v.normal = glm::normalize(glm::mat3(place) * v.normal);
+  }
+  add(s, std::move(sheet), material(s, glm::vec3(0.8f, 0.6f, 0.3f)));
+  s.bounds = scene::compute_bounds(s);
+  s.light.type = scene::LightType::spot;
+  s.light.position = light;
+  s.light.direction = glm::normalize(glm::vec3(0.0f, 0.0f, -0.3f) - s.light.position);
+  s.light.spot_angle = glm::radians(35.0f);
+  s.light.size = 0.0f;
+  s.camera = view({-0.15f, 1.0f, 1.2f}, {0.0f, 0.0f, -0.25f}, 50.0f);
   return s;
 }
 

@@ -1,11 +1,20 @@
 #pragma once
 // Scenes the esm tests build themselves (no files): a room lit by a point light inside it,
-// the paper's two crossed pipes in front of a wall (Figures 9-11), and helpers.
+// the paper's two crossed pipes in front of a wall (Figures 9-11), plates lying on the ground and
+// a tilted sheet, and helpers.
 #include <glm/glm.hpp>
 
 #include "scene/scene.h"
 
 namespace penumbra::test {
+
+// Thin plates (`thickness` high) lying on a ground plane at several angles, and an open sheet
+// floating above them, rising towards +x, lit by a zero-size spot light at `light` (on the +x
+// side, aimed at the plates). Each plate casts a shadow a few texels wide along its own contact
+// line (a window frame on its pane), the thinner in texels the higher the light. Lit from well
+// above the sheet, the sheet is lit all over, and its rim on the light's side is both its own
+// silhouette edge and its nearest point to the light.
+scene::Scene plates_and_sheet(float thickness, const glm::vec3& light);
 
 // A closed 8 m room (walls facing inwards, |x|, |y|, |z| <= 4) lit by a zero-size point light at
 // `light`, with rods and a ball around the light whose shadows cross the point light's face

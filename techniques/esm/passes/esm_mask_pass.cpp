@@ -38,6 +38,7 @@ class MaskPass final : public exec::PassImpl {
     prog.set("u_edge_bias_texels", ctx.real("edge_bias"));
     prog.set("u_nearest_edge", ctx.boolean("nearest_edge") ? 1 : 0);
     prog.set("u_edge_lines", ctx.boolean("edge_lines") ? 1 : 0);
+    prog.set("u_edge_plane", ctx.boolean("edge_plane") ? 1 : 0);
     prog.set("u_inv_view_proj", glm::inverse(ctx.frame().projection() * ctx.frame().view()));
     gl::Texture& mask = ctx.texture("mask");
     prog.set("u_screen", glm::vec2(mask.width(), mask.height()));
@@ -64,9 +65,13 @@ exec::PassType mask_pass_type() {
             "Subtracted from the receiver depth before the depth and edge-depth comparisons")
       .real("aa_width", 1.0, 0.0, 8.0, "pixels", "Width of the shadow edge's ramp on screen: 1 = the pixel's coverage; 0 = binary")
       .real("boundary_shift", 0.0, 0.0, 2.0, "texels", "Shadow boundary moved outwards from the silhouette edge (the paper: 0.707)")
-      .real("edge_bias", 0.5, 0.0, 8.0, "texels",
+      .real("edge_bias", 0.1, 0.0, 8.0, "texels",
             "A receiver is behind a silhouette edge when deeper than the edge by more than its own depth change over this "
-            "many texels (a surface running into its own edge is not shadowed by it); nearer receivers get the plain test")
+            "many texels; nearer receivers get the plain test")
+      .boolean("edge_plane", true,
+               "A receiver is behind a texel's edge line only where its tangent plane, extended to the line, is behind the "
+               "edge too (a surface running into its own edge is not shadowed by it); false: the depth margin edge_bias "
+               "alone (0.5 texels was its default then)")
       .boolean("nearest_edge", true,
                "A receiver not behind a texel's farthest edge (its own, at a contact) but behind its nearest one uses that "
                "edge alone; false: the plain test there, as before the map kept the nearest edge")

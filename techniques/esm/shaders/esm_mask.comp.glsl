@@ -44,6 +44,7 @@ uniform float u_aa_width;         // pixels; 0 = a binary edge
 uniform float u_edge_bias_texels; // edge_bias: texels of the receiver's own depth slope
 uniform bool u_nearest_edge;      // nearest_edge: read edge_near where the farthest edge is not in front
 uniform bool u_edge_lines;        // edge_lines: the texels' edges as lines at the receiver (else bilinear)
+uniform bool u_edge_plane;        // edge_plane: behind an edge's line only where the receiver's plane is too
 uniform mat4 u_inv_view_proj;     // camera clip -> world
 uniform vec2 u_screen;            // pixels
 
@@ -57,21 +58,50 @@ vec3 on_plane(vec2 px, vec3 p, vec3 n) {
   return o + d * (dot(p - o, n) / denom);
 }
 
-// Window depth per texel of the receiver's surface, from how map coordinates and depth change
-// per pixel along x (cx) and y (cy); a surface seen edge-on gets a huge slope.
-float receiver_slope(vec3 cx, vec3 cy) {
+// Window depth change per texel (map x and y) of the receiver's surface, from how map coordinates
+// and depth change per pixel along x (cx) and y (cy); a surface seen edge-on gets a huge slope.
+vec2 receiver_gradient(vec3 cx, vec3 cy) {
   float det = cx.x * cy.y - cx.y * cy.x;
-  if (abs(det) < 1e-12) return 1e9;
-  vec2 dz = vec2(cx.z * cy.y - cy.z * cx.y, cy.z * cx.x - cx.z * cy.x) / det;
-  return length(dz);
+  if (abs(det) < 1e-12) return vec2(1e9);
+  return vec2(cx.z * cy.y - cy.z * cx.y, cy.z * cx.x - cx.z * cy.x) / det;
 }
+
+// The receiver as the edges see it: its biased depth, its surface's depth gradient per texel, the
+// edge bias that gradient gives (edge_bias texels of it) and its place in the 2x2 footprint
+// (texels from the first texel's centre).
+struct Receiver {
+  float z;
+  vec2 dz;
+  float edge_bias;
+  vec2 f;
+};
 
 // map_texel's mask (.a): a quad's texel, or its nearest edge alone (depth and lit-ness, no distance).
 const float QUAD_TEXEL = 1.0, NEAREST_EDGE_ONLY = 2.0;
 bool has_quad(vec4 texel) { return texel.a > 0.5; }
 
-// The receiver (depth z) is behind the texel's edge by more than `edge_bias`.
-bool behind_edge(vec4 texel, float z, float edge_bias) { return z > texel.b + edge_bias; }
+// edge_plane: where the texel has its edge as a line (its own quads), the receiver is behind the
+// edge only if its tangent plane, extended to the line, is also behind the edge by more than this
+// many texels of its depth gradient. A surface never shadows itself along its own silhouette
+// edge, and that edge lies in its plane (a sheet's rim, the lit facet of a sharp edge) or, for a
+// convex surface, in front of it, however far the receiver is from it and whichever way the
+// surface slopes; edge_bias alone, a depth margin at the receiver, had to cover the surface's
+// rise over the whole band, which handed the plain map's staircase to shadows cast by an edge
+// less than that in front of the receiver (a window frame on its pane: contact slivers). With the
+// plane, edge_bias went from 0.5 to 0.1 texels: edge error at 512^2, 1080p, llvmpipe,
+// CesiumMilkTruck 0.0459 -> 0.0394, FlightHelmet 0.0548 -> 0.0520, showcase 0.0221 -> 0.0209
+// (docs/results/esm.md, "the receiver's plane at the edge").
+const float EDGE_PLANE_TOLERANCE = 0.25;
+
+// The receiver is behind the texel's edge: deeper than it by more than edge_bias and, with
+// edge_plane, its plane at the texel's edge line too. `outward` is the line's direction, `centre`
+// the texel's offset in the footprint.
+bool behind_edge(vec4 texel, vec2 outward, vec2 centre, Receiver r) {
+  if (r.z <= texel.b + r.edge_bias) return false;
+  if (!u_edge_plane || texel.a != QUAD_TEXEL) return true;
+  float at = texel.g + dot(r.f - centre, outward);  // the receiver's signed distance from the line
+  return r.z - at * dot(r.dz, outward) > texel.b + EDGE_PLANE_TOLERANCE * length(r.dz);
+}
 
 // A map texel as the receiver at depth z sees it. Behind its farthest edge: every quad of the texel
 // (the distance the edge key kept, MAX). Else behind its nearest edge only: that edge alone, as if the
@@ -79,14 +109,21 @@ bool behind_edge(vec4 texel, float z, float edge_bias) { return z > texel.b + ed
 // edge, and the receiver, behind none, gets the plain test (rule b below). The nearest edge took
 // esm's edge error at 512^2, 1080p, H200 from 0.0199 to 0.0146 on colonnade and 0.0416 to 0.0327
 // on Fox, 0.74-1.01x on 11 scenes (docs/results/esm.md, 2026-11-29).
-// `edge` is the texel's stored edge value, whose direction the edge lines read.
-vec4 map_texel(ivec2 p, float z, float edge_bias, out float edge) {
-  edge = texelFetch(u_edge, p, 0).r;
+// The texel is the one at `centre` in the footprint; `outward` its edge line's direction (where it
+// has a quad), decoded once for the plane and the edge lines; `behind`: the receiver is behind the
+// edge the texel keeps.
+vec4 map_texel(ivec2 i0, vec2 centre, Receiver r, out vec2 outward, out bool behind) {
+  ivec2 p = i0 + ivec2(centre);
+  float edge = texelFetch(u_edge, p, 0).r;
   vec4 all_quads = esm_decode(vec2(edge, texelFetch(u_edge_depth, p, 0).r));
-  if (!u_nearest_edge || !has_quad(all_quads) || behind_edge(all_quads, z, edge_bias)) return all_quads;
+  outward = has_quad(all_quads) ? esm_edge_outward(edge) : vec2(0.0);
+  behind = has_quad(all_quads) && behind_edge(all_quads, outward, centre, r);
+  if (!u_nearest_edge || !has_quad(all_quads) || behind) return all_quads;
+  // Only an edge nearer than the farthest: the same one (its depth rounded up) has been judged.
   vec4 nearest_edge = esm_decode_near(texelFetch(u_edge_near, p, 0).r);
-  return has_quad(nearest_edge) && behind_edge(nearest_edge, z, edge_bias) ? vec4(nearest_edge.rgb, NEAREST_EDGE_ONLY)
-                                                                         : all_quads;
+  behind = has_quad(nearest_edge) && nearest_edge.b < all_quads.b &&
+           behind_edge(vec4(nearest_edge.rgb, NEAREST_EDGE_ONLY), outward, centre, r);
+  return behind ? vec4(nearest_edge.rgb, NEAREST_EDGE_ONLY) : all_quads;
 }
 
 // Lit-ness of a texel for a receiver at depth z behind all the footprint's edges: a quad's, unless
@@ -131,11 +168,11 @@ struct EdgeLine {
   float at;        // at the receiver
 };
 
-EdgeLine edge_line(vec4 texel, float edge, bool valid, vec2 centre, vec2 f) {
+EdgeLine edge_line(vec4 texel, vec2 outward, bool valid, vec2 centre, vec2 f) {
   EdgeLine e;
   e.valid = valid;
   e.distance = texel.g;
-  e.outward = valid ? esm_edge_outward(edge) : vec2(0.0);
+  e.outward = valid ? outward : vec2(0.0);
   e.centre = centre;
   e.at = e.distance + dot(f - centre, e.outward);
   return e;
@@ -197,16 +234,16 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   vec2 px = vec2(pixel) + 0.5;
   vec3 cx = esm_map_coord(face, on_plane(px + vec2(1.0, 0.0), world, normal)).xyz - c.xyz;
   vec3 cy = esm_map_coord(face, on_plane(px + vec2(0.0, 1.0), world, normal)).xyz - c.xyz;
-  // Behind an edge by more than the receiver's own surface changes depth over edge_bias texels: a
-  // surface running into its own silhouette edge (an open sheet seen from its lit side, the lit
-  // facet next to a sharp edge) is not shadowed by that edge. Half a texel (it was the band plus
-  // the footprint, 2.9 texels): receivers nearer the edge than that got the plain map's staircase,
-  // at contacts and where casters meet; edge error on an H200 at 1080p, 512^2 map, 0.91-1.00x
-  // on 11 scenes (docs/results/esm.md, 2026-11-29).
-  float edge_bias = receiver_slope(cx, cy) * u_edge_bias_texels;
-  float s00, s10, s01, s11;  // the stored edge values
-  vec4 t00 = map_texel(i0, z, edge_bias, s00), t10 = map_texel(i0 + ivec2(1, 0), z, edge_bias, s10);
-  vec4 t01 = map_texel(i0 + ivec2(0, 1), z, edge_bias, s01), t11 = map_texel(i0 + ivec2(1, 1), z, edge_bias, s11);
+  // Behind an edge by more than the receiver's own surface changes depth over edge_bias texels, and
+  // with edge_plane by its plane at the edge (behind_edge): a surface running into its own
+  // silhouette edge (an open sheet seen from its lit side, the lit facet next to a sharp edge) is
+  // not shadowed by that edge.
+  vec2 dz = receiver_gradient(cx, cy);
+  Receiver r = Receiver(z, dz, length(dz) * u_edge_bias_texels, f);
+  vec2 o00, o10, o01, o11;   // their edge lines' directions
+  bool b00, b10, b01, b11;   // behind their edges
+  vec4 t00 = map_texel(i0, vec2(0.0, 0.0), r, o00, b00), t10 = map_texel(i0, vec2(1.0, 0.0), r, o10, b10);
+  vec4 t01 = map_texel(i0, vec2(0.0, 1.0), r, o01, b01), t11 = map_texel(i0, vec2(1.0, 1.0), r, o11, b11);
   float d00 = texelFetch(u_shadow_map, i0, 0).r, d10 = texelFetch(u_shadow_map, i0 + ivec2(1, 0), 0).r;
   float d01 = texelFetch(u_shadow_map, i0 + ivec2(0, 1), 0).r, d11 = texelFetch(u_shadow_map, i0 + ivec2(1, 1), 0).r;
   vec4 tn = nearest.y > i0.y ? (nearest.x > i0.x ? t11 : t01) : (nearest.x > i0.x ? t10 : t00);
@@ -215,8 +252,7 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   // it: plain shadow mapping (the paper: near overlaps the method "behaves almost like standard
   // shadow mapping").
   int quads = int(has_quad(t00)) + int(has_quad(t10)) + int(has_quad(t01)) + int(has_quad(t11));
-  int behind = int(has_quad(t00) && behind_edge(t00, z, edge_bias)) + int(has_quad(t10) && behind_edge(t10, z, edge_bias)) +
-               int(has_quad(t01) && behind_edge(t01, z, edge_bias)) + int(has_quad(t11) && behind_edge(t11, z, edge_bias));
+  int behind = int(b00) + int(b10) + int(b01) + int(b11);
   bool b = quads > 0 && behind == quads;
   if (!b) return a ? 0.0 : 1.0;
   // Occluded at the nearest texel: only its own edge's inside may lighten it (sub-texel).
@@ -243,10 +279,10 @@ float visibility(ivec2 pixel, vec3 world, vec3 normal) {
   if (u_edge_lines) {
     // A texel gives its line when map_texel kept its own quads (not the nearest edge alone: no
     // distance) and it does not contradict the depth map.
-    EdgeLine e00 = edge_line(t00, s00, t00.a == QUAD_TEXEL && !contradiction.x, vec2(0.0, 0.0), f);
-    EdgeLine e10 = edge_line(t10, s10, t10.a == QUAD_TEXEL && !contradiction.y, vec2(1.0, 0.0), f);
-    EdgeLine e01 = edge_line(t01, s01, t01.a == QUAD_TEXEL && !contradiction.z, vec2(0.0, 1.0), f);
-    EdgeLine e11 = edge_line(t11, s11, t11.a == QUAD_TEXEL && !contradiction.w, vec2(1.0, 1.0), f);
+    EdgeLine e00 = edge_line(t00, o00, t00.a == QUAD_TEXEL && !contradiction.x, vec2(0.0, 0.0), f);
+    EdgeLine e10 = edge_line(t10, o10, t10.a == QUAD_TEXEL && !contradiction.y, vec2(1.0, 0.0), f);
+    EdgeLine e01 = edge_line(t01, o01, t01.a == QUAD_TEXEL && !contradiction.z, vec2(0.0, 1.0), f);
+    EdgeLine e11 = edge_line(t11, o11, t11.a == QUAD_TEXEL && !contradiction.w, vec2(1.0, 1.0), f);
     float d;
     vec2 d_outward;
     if (edge_line_distance(e00, e10, e01, e11, f, d, d_outward)) {
